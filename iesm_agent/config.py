@@ -1,0 +1,69 @@
+"""Hyperparameters (paper Sec. 4) in one pydantic config, overridable from files and the CLI."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from pathlib import Path
+from typing import Any, Optional
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from .errors import IesmError
+
+
+class MappingConfig(BaseModel):
+    """Instance association / fusion (Sec. 3.1)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    delta_geo: float = 0.4
+    delta_sem: float = 0.85
+    w_geo: float = 0.7
+    w_sem: float = 0.3
+
+
+class RetrievalConfig(BaseModel):
+    """MTEFR (Sec. 3.4.2): `kappa` top-k per expert, `gamma`/`mu` the lambda schedule,
+    `max_candidates` G, `skip_below` the gate weight under which the cost-saving mode skips
+    an expert (None = call every expert concurrently with the gate)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    kappa: int = Field(2, ge=1)
+    gamma: float = Field(0.75, ge=0, le=1)
+    mu: float = Field(16.0, ge=0)
+    max_candidates: int = Field(100, ge=1)
+    skip_below: Optional[float] = Field(None, ge=0, le=1)
+
+
+class Settings(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    mapping: MappingConfig = Field(default_factory=MappingConfig)
+    retrieval: RetrievalConfig = Field(default_factory=RetrievalConfig)
+
+
+def load_settings(path: str | Path | None = None, overrides: dict[str, Any] | None = None) -> Settings:
+    """Settings from a TOML or JSON file (optional), then dotted `overrides` such as
+    {"retrieval.kappa": 3}. Errors name the file and the field."""
+    data: dict[str, Any] = {}
+    if path is not None:
+        path = Path(path)
+        try:
+            raw = path.read_bytes()
+            data = tomllib.loads(raw.decode()) if path.suffix == ".toml" else json.loads(raw)
+        except (OSError, ValueError) as exc:
+            raise IesmError(f"cannot read settings: {exc}", path) from exc
+    for dotted, value in (overrides or {}).items():
+        node = data
+        *parents, leaf = dotted.split(".")
+        for key in parents:
+            node = node.setdefault(key, {})
+        node[leaf] = value
+    try:
+        return Settings.model_validate(data)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        field = ".".join(str(p) for p in err["loc"])
+        raise IesmError(err["msg"], path or "settings", field) from exc

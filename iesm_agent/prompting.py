@@ -1,0 +1,75 @@
+"""Jinja prompt templates -> chat messages.
+
+A template defines `{% block system %}` and `{% block user %}`; each block becomes one
+message (an empty block is left out). Templates are looked up by file name in the user
+directories first, then in the shipped `prompts/`, so a user folder overrides any
+template by name. Data is fenced with the `fence` filter (JSON, with <, >, & escaped),
+so untrusted captions cannot close a fence or inject instructions as markup.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+from typing import Any, Iterable
+
+from .errors import IesmError
+from .providers.base import Message
+from .resources import resource_dir
+
+
+def fence(value: Any) -> str:
+    """Compact JSON of `value` with <, >, & and ' escaped (safe inside tag fences)."""
+    text = json.dumps(value, ensure_ascii=False, separators=(", ", ": "))
+    return (text.replace("&", "\\u0026").replace("<", "\\u003c")
+            .replace(">", "\\u003e").replace("'", "\\u0027"))
+
+
+class PromptLibrary:
+    """Renders named templates from `dirs` (searched first) and the shipped `prompts/`."""
+
+    def __init__(self, dirs: Iterable[str | Path] = ()):
+        import jinja2
+
+        self.dirs = [Path(d) for d in dirs] + [resource_dir("prompts")]
+        for d in self.dirs[:-1]:
+            if not d.is_dir():
+                raise IesmError("prompt directory does not exist", d)
+        self._env = jinja2.Environment(
+            loader=jinja2.FileSystemLoader([str(d) for d in self.dirs]),
+            undefined=jinja2.StrictUndefined,
+            trim_blocks=True,
+            lstrip_blocks=True,
+            keep_trailing_newline=False,
+            autoescape=False,
+        )
+        self._env.filters["fence"] = fence
+
+    def source_hash(self, name: str) -> str:
+        """sha256 (hex, 12 chars) of the template source that `name` resolves to."""
+        source, _, _ = self._env.loader.get_source(self._env, name)
+        return hashlib.sha256(source.encode()).hexdigest()[:12]
+
+    def render(self, name: str, **variables: Any) -> list[Message]:
+        """Render template `name` into [system, user] messages."""
+        import jinja2
+
+        try:
+            template = self._env.get_template(name)
+            context = template.new_context(variables)
+            messages = []
+            for role in ("system", "user"):
+                block = template.blocks.get(role)
+                if block is None:
+                    continue
+                text = "".join(block(context)).strip()
+                if text:
+                    messages.append(Message(role=role, content=text))
+        except jinja2.TemplateNotFound as exc:
+            raise IesmError(f"prompt template {name!r} not found in {[str(d) for d in self.dirs]}") from exc
+        except jinja2.TemplateError as exc:
+            raise IesmError(f"cannot render prompt template: {exc}", name) from exc
+        if not messages:
+            raise IesmError("template renders no system or user block", name)
+        return messages

@@ -1,0 +1,97 @@
+"""The provider protocol: chat messages in, one completion out, sync and async.
+
+A `Model` is named by a string such as `offline`, `openai:gpt-4o-mini` or
+`ollama:llama3.1`; see `iesm_agent.providers.get_model`.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from abc import ABC, abstractmethod
+from typing import Any, Literal, Optional, Union
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class TextPart(BaseModel):
+    type: Literal["text"] = "text"
+    text: str
+
+
+class ImagePart(BaseModel):
+    """An image given inline: base64 `data` with its `mime_type` (e.g. image/png)."""
+
+    type: Literal["image"] = "image"
+    data: str
+    mime_type: str = "image/png"
+
+
+class Message(BaseModel):
+    role: Literal["system", "user", "assistant"]
+    content: Union[str, list[Union[TextPart, ImagePart]]]
+
+    def text(self) -> str:
+        """The message's text, image parts left out."""
+        if isinstance(self.content, str):
+            return self.content
+        return "\n".join(part.text for part in self.content if isinstance(part, TextPart))
+
+
+class Usage(BaseModel):
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
+
+    @property
+    def total_tokens(self) -> int:
+        return self.prompt_tokens + self.completion_tokens
+
+
+class Completion(BaseModel):
+    """A model's reply. `latency_ms` is wall time of the call; `cached` is True when served by the cache."""
+
+    text: str
+    model: str
+    usage: Usage = Field(default_factory=Usage)
+    latency_ms: float = 0.0
+    cached: bool = False
+
+
+class Capabilities(BaseModel):
+    vision: bool = False
+    json_schema: bool = False
+    tools: bool = False
+
+
+class ChatOptions(BaseModel):
+    """Per-call parameters. `json_schema` asks for structured output when the model supports it
+    (the prompt must still say what JSON to return, for models that do not)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    temperature: float = 0.0
+    max_tokens: Optional[int] = None
+    json_schema: Optional[dict[str, Any]] = None
+    seed: Optional[int] = None
+
+
+class Model(ABC):
+    """One chat model. Subclasses implement `acomplete`; `complete` is its sync twin."""
+
+    #: the string naming this model, e.g. "offline" or "openai:gpt-4o-mini"
+    name: str = "model"
+    capabilities: Capabilities = Capabilities()
+
+    @abstractmethod
+    async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
+        """Answer `messages`; raise `iesm_agent.errors.ProviderError` on failure."""
+
+    def complete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
+        """Synchronous `acomplete` (must not be called from a running event loop)."""
+        return asyncio.run(self.acomplete(messages, options))
+
+    def cache_identity(self) -> dict[str, Any]:
+        """What, besides messages and options, determines this model's replies (for cache keys)."""
+        return {"model": self.name}
+
+    async def aclose(self) -> None:
+        """Release connections; a no-op by default."""

@@ -1,0 +1,203 @@
+"""The map model: instances, rooms, the grid spec and the 2.5D layers.
+
+Coordinates: world x, y, z in metres, z up. Grid cell (row, col) covers
+x in [origin_x + col * cell_size, origin_x + (col + 1) * cell_size) and
+y in [origin_y + row * cell_size, origin_y + (row + 1) * cell_size).
+Flat cell index = row * width + col.
+"""
+
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+SCHEMA_VERSION = 1
+
+
+class Room(BaseModel):
+    """A room (region) of the map. `polygon` is a list of (x, y) vertices in metres."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    id: int
+    label: str
+    polygon: Optional[list[tuple[float, float]]] = None
+
+
+class Instance(BaseModel):
+    """One object instance of the instance dictionary.
+
+    `tags` holds structured attributes (e.g. color, material, shape) as strings;
+    `alt_labels` holds other plausible categories (e.g. the paper's top-5);
+    `mean_height` is in metres above the floor; `weight` is the observation count;
+    `centroid` is (x, y, z) in metres; `footprint_cells` is the number of grid cells it occupies.
+    """
+
+    model_config = ConfigDict(extra="forbid")
+
+    id: int
+    label: str
+    room_id: Optional[int] = None
+    room_label: Optional[str] = None
+    caption: str = ""
+    tags: dict[str, str] = Field(default_factory=dict)
+    alt_labels: list[str] = Field(default_factory=list)
+    mean_height: Optional[float] = None
+    weight: float = 1.0
+    frames: list[int] = Field(default_factory=list)
+    centroid: Optional[tuple[float, float, float]] = None
+    footprint_cells: int = 0
+
+
+class GridSpec(BaseModel):
+    """Top-down grid: `cell_size` in metres, `origin` (x, y) of cell (0, 0)'s corner, `height` rows x `width` cols."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    cell_size: float = Field(gt=0)
+    origin: tuple[float, float] = (0.0, 0.0)
+    height: int = Field(ge=0)
+    width: int = Field(ge=0)
+
+    def cell_of(self, x: float, y: float) -> tuple[int, int]:
+        """(row, col) of the cell containing world point (x, y); may be outside the grid."""
+        return (int(np.floor((y - self.origin[1]) / self.cell_size)),
+                int(np.floor((x - self.origin[0]) / self.cell_size)))
+
+    def center_of(self, row: int, col: int) -> tuple[float, float]:
+        """World (x, y) in metres of the centre of cell (row, col)."""
+        return (self.origin[0] + (col + 0.5) * self.cell_size,
+                self.origin[1] + (row + 0.5) * self.cell_size)
+
+    def contains(self, row: int, col: int) -> bool:
+        return 0 <= row < self.height and 0 <= col < self.width
+
+
+class InstanceGrid(BaseModel):
+    """The 2.5D map M in CSR layout over occupied cells only.
+
+    `cells` (K,) int64: sorted flat indices of occupied cells.
+    `indptr` (K + 1,) int64: entries of cell k are `ids[indptr[k]:indptr[k + 1]]`.
+    `ids` (nnz,) int64: instance ids occupying the cell (several = stacked, multi-occupancy).
+    `top` (nnz,) float32: height in metres of the instance's top in that cell (NaN if unknown).
+    """
+
+    model_config = ConfigDict(arbitrary_types_allowed=True, extra="forbid")
+
+    cells: np.ndarray
+    indptr: np.ndarray
+    ids: np.ndarray
+    top: np.ndarray
+
+    @model_validator(mode="after")
+    def _check_shapes(self) -> "InstanceGrid":
+        k, nnz = len(self.cells), len(self.ids)
+        if len(self.indptr) != k + 1:
+            raise ValueError(f"indptr has {len(self.indptr)} entries, expected {k + 1}")
+        if k and (self.indptr[0] != 0 or self.indptr[-1] != nnz):
+            raise ValueError("indptr must start at 0 and end at len(ids)")
+        if k == 0 and len(self.indptr) and self.indptr[0] != 0:
+            raise ValueError("indptr must start at 0")
+        if np.any(np.diff(self.indptr) < 0):
+            raise ValueError("indptr must be non-decreasing")
+        if np.any(np.diff(self.cells) <= 0):
+            raise ValueError("cells must be strictly increasing")
+        if len(self.top) != nnz:
+            raise ValueError(f"top has {len(self.top)} entries, expected {nnz}")
+        return self
+
+    @classmethod
+    def empty(cls) -> "InstanceGrid":
+        return cls(cells=np.zeros(0, np.int64), indptr=np.zeros(1, np.int64),
+                   ids=np.zeros(0, np.int64), top=np.zeros(0, np.float32))
+
+    @classmethod
+    def from_entries(cls, flat_cells: np.ndarray, ids: np.ndarray, top: np.ndarray | None = None) -> "InstanceGrid":
+        """Build from parallel (flat cell, instance id[, top height]) entries; duplicates
+        of (cell, id) are merged keeping the highest top."""
+        flat_cells = np.asarray(flat_cells, np.int64)
+        ids = np.asarray(ids, np.int64)
+        top = np.full(len(ids), np.nan, np.float32) if top is None else np.asarray(top, np.float32)
+        if len(flat_cells) == 0:
+            return cls.empty()
+        # sort by cell, id, then descending top so the first of each (cell, id) run is the highest
+        order = np.lexsort((-np.nan_to_num(top, nan=-np.inf), ids, flat_cells))
+        flat_cells, ids, top = flat_cells[order], ids[order], top[order]
+        keep = np.ones(len(ids), bool)
+        keep[1:] = (flat_cells[1:] != flat_cells[:-1]) | (ids[1:] != ids[:-1])
+        flat_cells, ids, top = flat_cells[keep], ids[keep], top[keep]
+        cells, starts = np.unique(flat_cells, return_index=True)
+        indptr = np.append(starts, len(ids)).astype(np.int64)
+        return cls(cells=cells.astype(np.int64), indptr=indptr, ids=ids, top=top)
+
+    def entries(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(flat cell per entry, id per entry, top per entry), each (nnz,)."""
+        counts = np.diff(self.indptr)
+        return np.repeat(self.cells, counts), self.ids, self.top
+
+    def at(self, flat_cell: int) -> np.ndarray:
+        """Instance ids in one cell (empty array if unoccupied)."""
+        k = np.searchsorted(self.cells, flat_cell)
+        if k < len(self.cells) and self.cells[k] == flat_cell:
+            return self.ids[self.indptr[k]:self.indptr[k + 1]]
+        return self.ids[:0]
+
+    @property
+    def multi_occupancy_cells(self) -> int:
+        """Number of cells holding more than one instance."""
+        return int(np.count_nonzero(np.diff(self.indptr) > 1))
+
+
+class SceneMap(BaseModel):
+    """An instance-enriched 2.5D semantic map of one scene (what a `.iesm` file holds).
+
+    `room_map` (H, W) int32: room id per cell, -1 where none. `obstacles` (H, W) bool.
+    `embeddings` (N, D) float array aligned with `instances` (row i = instances[i]); `embedding_model`
+    names the model that produced them.
+    """
+
+    model_config = ConfigDict(arbitrary_types_allowed=True, extra="forbid")
+
+    schema_version: int = SCHEMA_VERSION
+    scene_id: str
+    source: str = ""
+    grid: GridSpec
+    instances: list[Instance]
+    rooms: list[Room] = Field(default_factory=list)
+    occupancy: InstanceGrid = Field(default_factory=InstanceGrid.empty)
+    room_map: Optional[np.ndarray] = None
+    obstacles: Optional[np.ndarray] = None
+    embeddings: Optional[np.ndarray] = None
+    embedding_model: Optional[str] = None
+    meta: dict[str, str] = Field(default_factory=dict)
+
+    @model_validator(mode="after")
+    def _check_consistency(self) -> "SceneMap":
+        ids = [inst.id for inst in self.instances]
+        if len(set(ids)) != len(ids):
+            raise ValueError("instance ids must be unique")
+        room_ids = [room.id for room in self.rooms]
+        if len(set(room_ids)) != len(room_ids):
+            raise ValueError("room ids must be unique")
+        hw = (self.grid.height, self.grid.width)
+        for name in ("room_map", "obstacles"):
+            layer = getattr(self, name)
+            if layer is not None and layer.shape != hw:
+                raise ValueError(f"{name} has shape {layer.shape}, grid is {hw}")
+        if self.embeddings is not None and (self.embeddings.ndim != 2 or len(self.embeddings) != len(self.instances)):
+            raise ValueError(f"embeddings must be (N={len(self.instances)}, D), got {self.embeddings.shape}")
+        n_cells = self.grid.height * self.grid.width
+        if len(self.occupancy.cells) and (self.occupancy.cells[0] < 0 or self.occupancy.cells[-1] >= n_cells):
+            raise ValueError("occupancy cells fall outside the grid")
+        unknown = set(np.unique(self.occupancy.ids).tolist()) - set(ids)
+        if unknown:
+            raise ValueError(f"occupancy refers to unknown instance ids {sorted(unknown)[:5]}")
+        return self
+
+    def instance(self, instance_id: int) -> Instance:
+        for inst in self.instances:
+            if inst.id == instance_id:
+                return inst
+        raise KeyError(instance_id)
