@@ -17,6 +17,24 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        print(f"iesm-agent {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                 help="Print the version and exit."),
+) -> None:
+    """Goal retrieval over instance-enriched 2.5D semantic maps (IESM + MTEFR)."""
+
+
 _COMMAND_MODULES = ("store_cmds", "ask_cmd", "eval_cmds")
 
 

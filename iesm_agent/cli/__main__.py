@@ -1,0 +1,5 @@
+"""`python -m iesm_agent.cli` == `iesm`."""
+
+from . import main
+
+main()

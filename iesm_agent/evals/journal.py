@@ -1,0 +1,75 @@
+"""The run journal `results.jsonl`: one `ResultRecord` per (query, variant), appended and flushed.
+
+A record counts once its newline is written: a run killed mid-write leaves a last line without
+one, which `read_journal` ignores and `repair_journal` cuts, so a resumed run re-asks that query.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import IO, Optional
+
+from pydantic import BaseModel, ConfigDict, ValidationError
+
+from ..errors import IesmError
+
+
+class ResultRecord(BaseModel):
+    """Outcome of one query under one variant. `rank` is the 1-based position of the first
+    accepted id in the full ranking (None when no accepted id was ranked)."""
+
+    model_config = ConfigDict(extra="ignore")
+
+    id: str
+    variant: str
+    method: str
+    type: Optional[str] = None
+    map: str
+    query: str
+    target: int
+    predicted: Optional[int] = None
+    correct: bool
+    rank: Optional[int] = None
+    ranking: list[int]
+    latency_ms: float
+    tokens: int = 0
+    cache_hits: int = 0
+    failures: list[str] = []
+    candidate_recall: Optional[float] = None
+
+    @property
+    def key(self) -> tuple[str, str]:
+        return self.id, self.variant
+
+
+def read_journal(path: Path) -> list[ResultRecord]:
+    """All complete (newline-terminated) records of `path` (missing file -> []). A damaged
+    complete line is an error naming the line."""
+    if not path.exists():
+        return []
+    lines = path.read_text(encoding="utf-8", errors="replace").split("\n")[:-1]  # the last piece has no newline
+    records = []
+    for number, line in enumerate(lines, start=1):
+        if not line.strip():
+            continue
+        try:
+            records.append(ResultRecord.model_validate_json(line))
+        except ValidationError as exc:
+            raise IesmError(f"damaged journal record: {exc.errors()[0]['msg']}", path, f"line {number}") from exc
+    return records
+
+
+def repair_journal(path: Path) -> None:
+    """Cut a truncated last line so that appends start on a fresh line."""
+    if not path.exists():
+        return
+    data = path.read_bytes()
+    if data and not data.endswith(b"\n"):
+        path.write_bytes(data[: data.rfind(b"\n") + 1])
+
+
+def append_record(handle: IO[str], record: ResultRecord) -> None:
+    """Write one record as a line and flush it to the OS."""
+    handle.write(json.dumps(record.model_dump(mode="json"), ensure_ascii=False) + "\n")
+    handle.flush()

@@ -1,0 +1,72 @@
+"""Retrieval metrics (paper Sec. 4.3): O-SR per query type and overall, MRR and top-k from the
+rank of the first accepted id."""
+
+from __future__ import annotations
+
+import statistics
+from collections import defaultdict
+from typing import Iterable, Optional, Sequence
+
+from .journal import ResultRecord
+
+QUERY_TYPES = ("o", "or", "od", "ord", "ard")
+TYPE_TITLES = {"o": "(o)", "or": "(o,r)", "od": "(o,d)", "ord": "(o,r,d)", "ard": "(a,r,d)"}
+UNTYPED = "-"
+
+
+def osr(records: Sequence[ResultRecord]) -> float:
+    """Object retrieval success rate: fraction of records whose prediction is accepted."""
+    return sum(r.correct for r in records) / len(records) if records else 0.0
+
+
+def mrr(ranks: Iterable[Optional[int]]) -> float:
+    """Mean reciprocal rank; a missing rank (no accepted id ranked) counts 0."""
+    ranks = list(ranks)
+    return sum(1.0 / r for r in ranks if r) / len(ranks) if ranks else 0.0
+
+
+def top_k(ranks: Iterable[Optional[int]], k: int) -> float:
+    """Fraction of queries with an accepted id within the first `k` of the ranking."""
+    ranks = list(ranks)
+    return sum(1 for r in ranks if r is not None and r <= k) / len(ranks) if ranks else 0.0
+
+
+def _overall(records: Sequence[ResultRecord]) -> dict:
+    ranks = [r.rank for r in records]
+    latencies = [r.latency_ms for r in records]
+    recalls = [r.candidate_recall for r in records if r.candidate_recall is not None]
+    return {
+        "n": len(records),
+        "osr": osr(records),
+        "mrr": mrr(ranks),
+        "top3": top_k(ranks, 3),
+        "latency_ms_p50": statistics.median(latencies) if latencies else 0.0,
+        "latency_ms_mean": statistics.fmean(latencies) if latencies else 0.0,
+        "tokens": sum(r.tokens for r in records),
+        "cache_hits": sum(r.cache_hits for r in records),
+        "queries_with_failures": sum(1 for r in records if r.failures),
+        "candidate_recall": statistics.fmean(recalls) if recalls else None,
+    }
+
+
+def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> dict:
+    """`{"methods": {variant: {"overall": {...}, "by_type": {type: {"n", "osr"}}}}}`, variants
+    in the order given (then any others in order of appearance)."""
+    grouped: dict[str, list[ResultRecord]] = {v: [] for v in variants}
+    for record in records:
+        grouped.setdefault(record.variant, []).append(record)
+    methods = {}
+    for variant, group in grouped.items():
+        by_type: dict[str, list[ResultRecord]] = defaultdict(list)
+        for record in group:
+            by_type[record.type or UNTYPED].append(record)
+        order = [t for t in QUERY_TYPES if t in by_type] + sorted(set(by_type) - set(QUERY_TYPES))
+        overall = _overall(group)
+        typed = [osr(by_type[t]) for t in order if t != UNTYPED]
+        overall["osr_type_mean"] = statistics.fmean(typed) if typed else None
+        methods[variant] = {
+            "overall": overall,
+            "by_type": {t: {"n": len(by_type[t]), "osr": osr(by_type[t]),
+                            "mrr": mrr(r.rank for r in by_type[t])} for t in order},
+        }
+    return {"methods": methods}

@@ -1,0 +1,150 @@
+"""Query suites: JSONL, one `SuiteQuery` per line, validated against the maps they name.
+
+`map` is a path relative to the suite file, an absolute path, or the name of a shipped map
+(`apartment`). Errors name the suite file and line number.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterable, Literal, Optional
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from ..errors import IesmError
+from ..resources import shipped_map
+from ..store.model import SceneMap
+
+QueryType = Literal["o", "or", "od", "ord", "ard"]
+
+
+class SuiteQuery(BaseModel):
+    """One query: the instance `target` it was written for and the ids `accept`ed as correct."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    id: str = Field(min_length=1)
+    map: str = Field(min_length=1)
+    query: str = Field(min_length=1)
+    type: Optional[QueryType] = None
+    target: int
+    accept: list[int] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _target_accepted(self) -> "SuiteQuery":
+        if self.target not in self.accept:
+            self.accept = [self.target, *self.accept]
+        return self
+
+
+def resolve_map(ref: str, base_dir: Path) -> Path:
+    """The map file `ref` names: an existing path (relative to `base_dir`) or a shipped map name."""
+    path = Path(ref) if Path(ref).is_absolute() else base_dir / ref
+    if path.is_file():
+        return path.resolve()
+    if "/" not in ref and "\\" not in ref:
+        try:
+            return shipped_map(ref.removesuffix(".iesm"))
+        except FileNotFoundError:
+            pass
+    raise FileNotFoundError(f"unknown map {ref!r}: no file {path} and no shipped map of that name")
+
+
+class MapRegistry:
+    """Loads each map file once (by resolved path)."""
+
+    def __init__(self) -> None:
+        self._maps: dict[Path, SceneMap] = {}
+
+    def get(self, path: Path) -> SceneMap:
+        if path not in self._maps:
+            from ..store.fileformat import load_map
+
+            self._maps[path] = load_map(path)
+        return self._maps[path]
+
+
+@dataclass
+class SuiteEntry:
+    """A validated query with where it came from and the map file it resolves to."""
+
+    query: SuiteQuery
+    source: Path
+    line: int
+    map_path: Path
+
+
+@dataclass
+class Suite:
+    entries: list[SuiteEntry] = field(default_factory=list)
+    errors: list[IesmError] = field(default_factory=list)
+
+
+def _check(query: SuiteQuery, path: Path, registry: MapRegistry) -> Path:
+    """Resolved map path of `query`; raises ValueError when its map or ids are unknown."""
+    try:
+        map_path = resolve_map(query.map, path.parent)
+    except FileNotFoundError as exc:
+        raise ValueError(str(exc)) from exc
+    ids = {inst.id for inst in registry.get(map_path).instances}
+    unknown = [i for i in query.accept if i not in ids]
+    if unknown:
+        which = "target" if query.target in unknown else "accept id"
+        raise ValueError(f"{which} {unknown[0]} is not an instance of map {query.map!r}")
+    return map_path
+
+
+def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
+                registry: MapRegistry | None = None) -> Suite:
+    """Parse and validate suites. Each bad line raises an `IesmError` naming file and line, or
+    with `skip_invalid` is collected in `Suite.errors` and left out. Query ids are unique across
+    all suites given."""
+    registry = registry or MapRegistry()
+    suite = Suite()
+    seen: dict[str, str] = {}
+    for path in map(Path, paths):
+        try:
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise IesmError(f"cannot read suite: {exc}", path) from exc
+        for number, line in enumerate(text.splitlines(), start=1):
+            if not line.strip():
+                continue
+            try:
+                query = SuiteQuery.model_validate(json.loads(line))
+                if query.id in seen:
+                    raise ValueError(f"duplicate query id {query.id!r} (first at {seen[query.id]})")
+                map_path = _check(query, path, registry)
+            except ValidationError as exc:
+                err = exc.errors()[0]
+                loc = ".".join(str(p) for p in err["loc"])
+                error = IesmError(f"{loc}: {err['msg']}" if loc else err["msg"], path, f"line {number}")
+            except ValueError as exc:  # JSONDecodeError is a ValueError
+                error = IesmError(str(exc), path, f"line {number}")
+            else:
+                seen[query.id] = f"{path}:{number}"
+                suite.entries.append(SuiteEntry(query, path, number, map_path))
+                continue
+            if not skip_invalid:
+                raise error
+            suite.errors.append(error)
+    return suite
+
+
+def write_suite(queries: Iterable[SuiteQuery], path: str | Path) -> None:
+    """Write `queries` as JSONL atomically (temporary file + rename)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            for query in queries:
+                handle.write(json.dumps(query.model_dump(mode="json", exclude_none=True)) + "\n")
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

@@ -1,0 +1,201 @@
+"""The `.iesm` single-file map format.
+
+A ZIP archive (deflate) holding `manifest.json` and one `.npy` member per array:
+
+* `manifest.json`: `schema_version`, `scene_id`, `source`, `grid`, `instances`, `rooms`, `meta`,
+  `embedding_model`, and `arrays`: one entry per stored array with `name`, `member`, `dtype`
+  and `shape` (as in memory), `disk_dtype`, `encoding` (`raw` or `delta`) and `base`.
+* Arrays: `occupancy.cells|indptr|ids|top`, `room_map`, `obstacles`, `embeddings`.
+
+On disk, integer arrays use the smallest integer dtype that holds their values; sorted ones
+(occupancy cells and indptr) are delta-encoded (first value in `base`). Loading restores the
+in-memory dtype and values exactly. Embeddings are stored in their own dtype unless the caller
+asks for float16 on disk (`embeddings_dtype="float16"`, lossy, about half the size); they are
+loaded back in their original dtype. `.npy` members are read with `allow_pickle=False`.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import tempfile
+import zipfile
+import zlib
+from pathlib import Path
+from typing import Any, Optional
+
+import numpy as np
+from pydantic import ValidationError
+
+from ..errors import MapFormatError
+from .model import SCHEMA_VERSION, InstanceGrid, SceneMap
+
+MANIFEST = "manifest.json"
+_ARRAYS = ("occupancy.cells", "occupancy.indptr", "occupancy.ids", "occupancy.top",
+           "room_map", "obstacles", "embeddings")
+_INT_DTYPES = [np.dtype(t) for t in ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64")]
+
+
+def _smallest_int_dtype(values: np.ndarray) -> np.dtype:
+    """Smallest integer dtype holding every value of `values` (int64 for empty arrays)."""
+    if values.size == 0:
+        return np.dtype(np.uint8)
+    lo, hi = int(values.min()), int(values.max())
+    for dt in _INT_DTYPES:
+        info = np.iinfo(dt)
+        if info.min <= lo and hi <= info.max:
+            return dt
+    return np.dtype(np.int64)
+
+
+def _encode(name: str, arr: np.ndarray, embeddings_dtype: Optional[str]) -> tuple[dict, np.ndarray]:
+    """Manifest entry and the on-disk array for one in-memory array."""
+    entry: dict[str, Any] = {"name": name, "member": f"{name}.npy", "dtype": arr.dtype.str,
+                             "shape": list(arr.shape), "encoding": "raw", "base": 0}
+    disk = arr
+    if arr.dtype.kind in "iu":
+        if name in ("occupancy.cells", "occupancy.indptr") and arr.size:
+            entry["encoding"], entry["base"] = "delta", int(arr[0])
+            disk = np.diff(arr)
+        disk = disk.astype(_smallest_int_dtype(disk), copy=False)
+    elif name == "embeddings" and embeddings_dtype is not None:
+        disk = arr.astype(np.dtype(embeddings_dtype))
+    entry["disk_dtype"] = disk.dtype.str
+    return entry, np.ascontiguousarray(disk)
+
+
+def _decode(entry: dict, disk: np.ndarray) -> np.ndarray:
+    """Inverse of `_encode`: the array with its in-memory dtype and shape."""
+    dtype = np.dtype(entry["dtype"])
+    if entry["encoding"] == "delta":
+        out = np.empty(len(disk) + 1, dtype)
+        out[0] = entry["base"]
+        np.cumsum(disk, dtype=dtype, out=out[1:])
+        out[1:] += out[0]
+        return out
+    return disk.astype(dtype, copy=False)
+
+
+def _scene_arrays(scene: SceneMap) -> dict[str, np.ndarray]:
+    occ = scene.occupancy
+    arrays = {"occupancy.cells": occ.cells, "occupancy.indptr": occ.indptr,
+              "occupancy.ids": occ.ids, "occupancy.top": occ.top,
+              "room_map": scene.room_map, "obstacles": scene.obstacles, "embeddings": scene.embeddings}
+    return {k: np.asarray(v) for k, v in arrays.items() if v is not None}
+
+
+def save_map(scene: SceneMap, path: str | Path, *, embeddings_dtype: Optional[str] = None) -> int:
+    """Write `scene` to `path` atomically (temp file + rename); returns the file size in bytes.
+
+    `embeddings_dtype="float16"` stores embeddings as float16 on disk (lossy; restored as the
+    original dtype on load). Everything else round-trips exactly.
+    """
+    path = Path(path)
+    if embeddings_dtype not in (None, "float16", "float32"):
+        raise ValueError(f"embeddings_dtype must be None, 'float16' or 'float32', got {embeddings_dtype!r}")
+    entries, blobs = [], []
+    for name, arr in _scene_arrays(scene).items():
+        entry, disk = _encode(name, arr, embeddings_dtype)
+        buf = io.BytesIO()
+        np.save(buf, disk, allow_pickle=False)
+        entries.append(entry)
+        blobs.append((entry["member"], buf.getvalue()))
+    manifest = scene.model_dump(include={"schema_version", "scene_id", "source", "grid", "instances",
+                                         "rooms", "meta", "embedding_model"})
+    manifest["arrays"] = entries
+    manifest_bytes = json.dumps(manifest, ensure_ascii=False, separators=(",", ":")).encode()
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh, zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED, compresslevel=6) as zf:
+            zf.writestr(MANIFEST, manifest_bytes)
+            for member, data in blobs:
+                zf.writestr(member, data)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path.stat().st_size
+
+
+def _field_of(exc: ValidationError) -> str:
+    loc = exc.errors()[0]["loc"]
+    return ".".join(str(p) for p in loc) or "manifest"
+
+
+def load_map(path: str | Path) -> SceneMap:
+    """Read and validate a `.iesm` file. Any problem raises `MapFormatError` naming the file
+    and the field (or member) at fault."""
+    path = Path(path)
+    if not path.is_file():
+        raise MapFormatError("no such map file", path)
+    try:
+        with zipfile.ZipFile(path) as zf:
+            manifest = _read_manifest(zf, path)
+            arrays = {entry["name"]: _read_array(zf, entry, path) for entry in manifest.pop("arrays")}
+    except (zipfile.BadZipFile, zlib.error, EOFError) as exc:
+        raise MapFormatError(f"not a valid .iesm archive (truncated or corrupted): {exc}", path) from exc
+    occ = None
+    if any(name.startswith("occupancy.") for name in arrays):
+        try:
+            occ = InstanceGrid(cells=arrays.pop("occupancy.cells"), indptr=arrays.pop("occupancy.indptr"),
+                               ids=arrays.pop("occupancy.ids"), top=arrays.pop("occupancy.top"))
+        except KeyError as exc:
+            raise MapFormatError("occupancy arrays incomplete", path, f"arrays.{exc.args[0]}") from exc
+        except ValidationError as exc:
+            raise MapFormatError(exc.errors()[0]["msg"], path, "occupancy") from exc
+    try:
+        return SceneMap.model_validate({**manifest, **arrays, **({"occupancy": occ} if occ is not None else {})})
+    except ValidationError as exc:
+        raise MapFormatError(exc.errors()[0]["msg"], path, _field_of(exc)) from exc
+
+
+def _read_manifest(zf: zipfile.ZipFile, path: Path) -> dict:
+    try:
+        raw = zf.read(MANIFEST)
+    except KeyError as exc:
+        raise MapFormatError("archive has no manifest.json", path, MANIFEST) from exc
+    try:
+        manifest = json.loads(raw)
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise MapFormatError(f"invalid JSON: {exc}", path, MANIFEST) from exc
+    if not isinstance(manifest, dict):
+        raise MapFormatError("manifest must be a JSON object", path, MANIFEST)
+    version = manifest.get("schema_version")
+    if not isinstance(version, int):
+        raise MapFormatError("missing or non-integer schema_version", path, "schema_version")
+    if version > SCHEMA_VERSION:
+        raise MapFormatError(f"schema_version {version} is newer than this iesm-agent supports "
+                             f"({SCHEMA_VERSION}); upgrade iesm-agent", path, "schema_version")
+    arrays = manifest.get("arrays")
+    if not isinstance(arrays, list):
+        raise MapFormatError("missing array list", path, "arrays")
+    for i, entry in enumerate(arrays):
+        where = f"arrays[{i}]"
+        if not isinstance(entry, dict) or entry.get("name") not in _ARRAYS:
+            raise MapFormatError(f"unknown or missing array name (expected one of {', '.join(_ARRAYS)})", path, where)
+        for key, kind in (("member", str), ("dtype", str), ("disk_dtype", str), ("shape", list),
+                          ("encoding", str), ("base", int)):
+            if not isinstance(entry.get(key), kind):
+                raise MapFormatError(f"missing or invalid {key!r}", path, f"{where}.{key}")
+        if entry["encoding"] not in ("raw", "delta"):
+            raise MapFormatError(f"unknown encoding {entry['encoding']!r}", path, f"{where}.encoding")
+    return manifest
+
+
+def _read_array(zf: zipfile.ZipFile, entry: dict, path: Path) -> np.ndarray:
+    member = entry["member"]
+    try:
+        raw = zf.read(member)
+    except KeyError as exc:
+        raise MapFormatError("member missing from archive", path, member) from exc
+    try:
+        disk = np.load(io.BytesIO(raw), allow_pickle=False)
+        if disk.dtype != np.dtype(entry["disk_dtype"]):
+            raise ValueError(f"dtype {disk.dtype} does not match manifest {entry['disk_dtype']}")
+        arr = _decode(entry, disk)
+    except (ValueError, TypeError, OSError) as exc:
+        raise MapFormatError(f"unreadable array: {exc}", path, member) from exc
+    if list(arr.shape) != entry["shape"]:
+        raise MapFormatError(f"shape {list(arr.shape)} does not match manifest {entry['shape']}", path, member)
+    return arr
