@@ -21,9 +21,20 @@ from .resources import resource_dir
 
 def fence(value: Any) -> str:
     """Compact JSON of `value` with <, >, & and ' escaped (safe inside tag fences)."""
+    if isinstance(value, Fenced):
+        return value.fenced
     text = json.dumps(value, ensure_ascii=False, separators=(", ", ": "))
     return (text.replace("&", "\\u0026").replace("<", "\\u003c")
             .replace(">", "\\u003e").replace("'", "\\u0027"))
+
+
+class Fenced(dict):
+    """A dict that carries its `fence` text, computed once: for data rendered into many prompts
+    (candidate views). Do not mutate it after construction."""
+
+    def __init__(self, data: dict):
+        super().__init__(data)
+        self.fenced = fence(data)
 
 
 class PromptLibrary:

@@ -28,6 +28,8 @@ def test_peak_overrules_weighted_sum():
     assert res.scores[2] == pytest.approx(lam * p2 + (1 - lam) * s2)
     assert res.best == 1  # ... but the peak decides
     assert res.ranking == (1, 2, 3)
+    assert res.nu == {"obj": {1: 2, 2: 1}, "desc": {2: 2, 3: 1}, "room": {2: 2, 3: 1}}
+    assert res.deciding_expert() == "obj"
     # with almost no peak reliance (gamma 0, huge mu) the weighted sum wins instead
     sum_led = fuse(weights, rankings, gamma=0.0, mu=1e9)
     assert sum_led.best == 2
@@ -113,3 +115,14 @@ def test_kappa_three_ignores_positions_beyond_kappa_and_duplicates():
     assert res.scores[3] == pytest.approx(lam * 1.5 + (1 - lam) * 2.0)
     assert res.best == 3
     assert res.ranking == (3, 1, 2, 9)
+
+
+def test_deciding_expert_separates_winner_from_runner_up():
+    # both experts put 34 first (equal peaks); obj's second pick 7 is the runner-up, so the room
+    # expert, which gives 7 nothing, is what separates 34 from it: margin 0.5 * 2 vs 0.5 * (2 - 1).
+    res = fuse({"obj": 0.5, "room": 0.5}, {"obj": [34, 7], "room": [34, 12]})
+    assert res.ranking[:2] == (34, 7)
+    assert res.deciding_expert() == "room"
+    alone = fuse({"obj": 1.0, "room": 1.0}, {"obj": [5]})
+    assert alone.deciding_expert() == "obj"
+    assert fuse({"obj": 1.0}, {}).deciding_expert() is None

@@ -36,7 +36,7 @@ class ResultRecord(BaseModel):
     tokens: int = 0
     cache_hits: int = 0
     failures: list[str] = []
-    candidate_recall: Optional[float] = None
+    candidate_recall: Optional[bool] = None
 
     @property
     def key(self) -> tuple[str, str]:

@@ -45,7 +45,7 @@ def _overall(records: Sequence[ResultRecord]) -> dict:
         "tokens": sum(r.tokens for r in records),
         "cache_hits": sum(r.cache_hits for r in records),
         "queries_with_failures": sum(1 for r in records if r.failures),
-        "candidate_recall": statistics.fmean(recalls) if recalls else None,
+        "candidate_recall": statistics.fmean(map(float, recalls)) if recalls else None,
     }
 
 
@@ -70,3 +70,37 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
                             "mrr": mrr(r.rank for r in by_type[t])} for t in order},
         }
     return {"methods": methods}
+
+
+THRESHOLD_METRICS = ("osr", "osr_type_mean", "mrr", "top3")
+
+
+def parse_thresholds(specs: Iterable[str]) -> dict[str, float]:
+    """`["osr=0.6", "mrr=0.5,top3=0.8"]` -> {"osr": 0.6, "mrr": 0.5, "top3": 0.8}."""
+    from ..errors import IesmError
+
+    out = {}
+    for spec in (s.strip() for item in specs for s in item.split(",")):
+        if not spec:
+            continue
+        name, sep, value = spec.partition("=")
+        try:
+            if not sep or name.strip() not in THRESHOLD_METRICS:
+                raise ValueError
+            out[name.strip()] = float(value)
+        except ValueError:
+            raise IesmError(f"expected METRIC=VALUE with METRIC one of {', '.join(THRESHOLD_METRICS)}, "
+                            f"got {spec!r}", "--fail-under") from None
+    return out
+
+
+def threshold_failures(summary: dict, thresholds: dict[str, float]) -> list[str]:
+    """One message per (variant, metric) whose overall value is below its threshold."""
+    failures = []
+    for variant, m in summary["methods"].items():
+        for metric, minimum in thresholds.items():
+            value = m["overall"].get(metric)
+            if value is None or value < minimum:
+                shown = "n/a" if value is None else f"{value:.3f}"
+                failures.append(f"{variant}: {metric} {shown} < {minimum:g}")
+    return failures

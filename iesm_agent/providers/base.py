@@ -86,12 +86,18 @@ class Model(ABC):
         """Answer `messages`; raise `iesm_agent.errors.ProviderError` on failure."""
 
     def complete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
-        """Synchronous `acomplete` (must not be called from a running event loop)."""
-        return asyncio.run(self.acomplete(messages, options))
+        """Synchronous `acomplete` in a fresh event loop, with `aclose` before returning so no
+        connection outlives its loop (must not be called from a running event loop)."""
+        async def once() -> Completion:
+            try:
+                return await self.acomplete(messages, options)
+            finally:
+                await self.aclose()
+        return asyncio.run(once())
 
     def cache_identity(self) -> dict[str, Any]:
         """What, besides messages and options, determines this model's replies (for cache keys)."""
         return {"model": self.name}
 
     async def aclose(self) -> None:
-        """Release connections; a no-op by default."""
+        """Release connections (the model stays usable and reconnects lazily); a no-op by default."""

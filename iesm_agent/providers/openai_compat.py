@@ -17,6 +17,7 @@ import asyncio
 import email.utils
 import random
 import re
+import ssl
 import time
 from typing import Any, Optional, Union
 
@@ -95,6 +96,7 @@ class OpenAICompatModel(Model):
         self._client: httpx.AsyncClient | None = None
         self._semaphore: asyncio.Semaphore | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
+        self._ssl: ssl.SSLContext | None = None
 
     def __repr__(self) -> str:
         return f"OpenAICompatModel({self.name!r}, base_url={self.base_url!r})"
@@ -107,19 +109,12 @@ class OpenAICompatModel(Model):
         return {"calls": self.calls, "retries": self.retries, "failures": self.failures,
                 "prompt_tokens": self.prompt_tokens, "completion_tokens": self.completion_tokens}
 
-    def complete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
-        """Synchronous call; connections are released before returning."""
-        async def once() -> Completion:
-            try:
-                return await self.acomplete(messages, options)
-            finally:
-                await self.aclose()
-        return asyncio.run(once())
-
     async def aclose(self) -> None:
-        """Close the HTTP client; the model stays usable (a new client is made on the next call)."""
-        client, self._client, self._loop = self._client, None, None
-        if client is not None:
+        """Close the HTTP client; the model stays usable (a new client is made on the next call).
+        A client left over from an event loop that has since ended is only dropped."""
+        client, loop = self._client, self._loop
+        self._client = self._loop = None
+        if client is not None and loop is asyncio.get_running_loop():
             await client.aclose()
 
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
@@ -159,7 +154,11 @@ class OpenAICompatModel(Model):
             timeout = httpx.Timeout(self.timeout, connect=self.connect_timeout)
             limits = httpx.Limits(max_connections=self.concurrency,
                                   max_keepalive_connections=self.concurrency)
-            self._client = httpx.AsyncClient(timeout=timeout, limits=limits, headers=self._headers)
+            if self._ssl is None:  # made once: loading CA certificates costs ~40 ms
+                self._ssl = (httpx.create_ssl_context() if self.base_url.startswith("https:")
+                             else ssl.SSLContext(ssl.PROTOCOL_TLS_CLIENT))
+            self._client = httpx.AsyncClient(timeout=timeout, limits=limits, headers=self._headers,
+                                             verify=self._ssl)
             self._semaphore = asyncio.Semaphore(self.concurrency)
             self._loop = loop
         assert self._semaphore is not None
@@ -209,8 +208,9 @@ class OpenAICompatModel(Model):
                        f"{self.model!r} exists there)")
         else:
             message = f"HTTP {status}: {detail}"
+        retry_after = parse_retry_after(response.headers.get("retry-after"))
         return ProviderError(message, self.endpoint, retryable=status in RETRYABLE_STATUS,
-                             status=status, retry_after=parse_retry_after(response.headers.get("retry-after")))
+                             status=status, retry_after=retry_after)
 
     def _parse(self, response: httpx.Response) -> tuple[str, Usage]:
         try:

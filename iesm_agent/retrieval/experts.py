@@ -16,9 +16,8 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from ..errors import IesmError
 from ..resources import resource_dir
+from ..store.mapstore import CANDIDATE_FIELDS
 
-#: instance fields an expert may be shown (see MapStore.candidate_view)
-CANDIDATE_FIELDS = ("id", "label", "alt_labels", "room", "caption", "tags")
 ENTRY_POINT_GROUP = "iesm_agent.experts"
 
 

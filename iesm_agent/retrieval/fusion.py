@@ -22,7 +22,8 @@ from typing import Mapping, Sequence
 
 @dataclass(frozen=True)
 class FusionResult:
-    """`ranking` holds every id with U > 0, best first; `weights` are the normalised weights used."""
+    """`ranking` holds every id with U > 0, best first; `weights` are the normalised weights used;
+    `nu` the rank scores nu_{e,d} per expert (experts with a ranking, heaviest first)."""
 
     best: int | None
     ranking: tuple[int, ...]
@@ -31,7 +32,22 @@ class FusionResult:
     peak_scores: dict[int, float]
     lam: float
     weights: dict[str, float] = field(default_factory=dict)
+    nu: dict[str, dict[int, int]] = field(default_factory=dict)
     uniform_fallback: bool = False
+
+    def deciding_expert(self) -> str | None:
+        """The expert whose weighted rank score w_e (nu_{e,best} - nu_{e,runner-up}) most separates
+        `best` from the runner-up (its peak contribution when nothing else scored); the heavier
+        expert, then the first by name, on a tie. None when nothing scored."""
+        if self.best is None:
+            return None
+        second = self.ranking[1] if len(self.ranking) > 1 else None
+
+        def margin(name: str) -> float:
+            nu = self.nu[name]
+            return self.weights.get(name, 0.0) * (nu.get(self.best, 0) - nu.get(second, 0))
+
+        return max(self.nu, key=margin)  # first maximal in heaviest-first order
 
 
 def lambda_schedule(kappa: int, gamma: float, mu: float) -> float:
@@ -63,35 +79,33 @@ def fuse(weights: Mapping[str, float], rankings: Mapping[str, Sequence[int]], *,
     w, fallback = normalise_weights(weights, ranked)
     lam = lambda_schedule(kappa, gamma, mu)
 
-    ranks: dict[str, dict[int, int]] = {}
-    for name in ranked:
-        top: dict[int, int] = {}
+    nu: dict[str, dict[int, int]] = {}  # expert -> id -> kappa - rank + 1, top-kappa only
+    for name in sorted(ranked, key=lambda name: (-w.get(name, 0.0), name)):
+        scored: dict[int, int] = {}
         for d in rankings[name]:
-            if d not in top:
-                top[d] = len(top) + 1
-                if len(top) == kappa:
+            if d not in scored:
+                scored[d] = kappa - len(scored)
+                if len(scored) == kappa:
                     break
-        ranks[name] = top
+        nu[name] = scored
 
     sum_scores: dict[int, float] = {}
     peak_scores: dict[int, float] = {}
-    for name, top in ranks.items():
+    for name in nu:
         we = w.get(name, 0.0)
         if we <= 0:
             continue
-        for d, rho in top.items():
-            s = we * (kappa - rho + 1)
+        for d, nu_ed in nu[name].items():
+            s = we * nu_ed
             sum_scores[d] = sum_scores.get(d, 0.0) + s
             peak_scores[d] = max(peak_scores.get(d, 0.0), s)
     scores = {d: lam * peak_scores[d] + (1 - lam) * sum_scores[d] for d in sum_scores}
 
-    order = sorted(ranked, key=lambda name: (-w.get(name, 0.0), name))
-
     def key(d: int):
         return (-round(scores[d], 12), -round(sum_scores[d], 12), -round(peak_scores[d], 12),
-                tuple(ranks[name].get(d, kappa + 1) for name in order))
+                tuple(-nu[name].get(d, 0) for name in nu))
 
     ranking = tuple(sorted(scores, key=key))
     return FusionResult(best=ranking[0] if ranking else None, ranking=ranking, scores=scores,
                         sum_scores=sum_scores, peak_scores=peak_scores, lam=lam,
-                        weights=w, uniform_fallback=fallback)
+                        weights=w, nu=nu, uniform_fallback=fallback)

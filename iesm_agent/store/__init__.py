@@ -1,0 +1,7 @@
+"""The map store: model, `.iesm` file format, importers and the `MapStore` tool surface."""
+
+from .fileformat import load_map, save_map
+from .mapstore import MapStore
+from .model import GridSpec, Instance, InstanceGrid, Room, SceneMap
+
+__all__ = ["SceneMap", "Instance", "Room", "GridSpec", "InstanceGrid", "MapStore", "load_map", "save_map"]

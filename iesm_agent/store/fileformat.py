@@ -1,6 +1,6 @@
 """The `.iesm` single-file map format.
 
-A ZIP archive (deflate) holding `manifest.json` and one `.npy` member per array:
+A ZIP archive (deflate; members that barely compress, e.g. embeddings, are stored) holding `manifest.json` and one `.npy` member per array:
 
 * `manifest.json`: `schema_version`, `scene_id`, `source`, `grid`, `instances`, `rooms`, `meta`,
   `embedding_model`, and `arrays`: one entry per stored array with `name`, `member`, `dtype`
@@ -110,7 +110,9 @@ def save_map(scene: SceneMap, path: str | Path, *, embeddings_dtype: Optional[st
         with os.fdopen(fd, "wb") as fh, zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED, compresslevel=6) as zf:
             zf.writestr(MANIFEST, manifest_bytes)
             for member, data in blobs:
-                zf.writestr(member, data)
+                # float payloads such as embeddings barely deflate: store them when it saves < 10 %
+                packed = len(zlib.compress(data[:65536], 1)) < 0.9 * min(len(data), 65536)
+                zf.writestr(member, data, zipfile.ZIP_DEFLATED if packed else zipfile.ZIP_STORED)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

@@ -16,6 +16,14 @@ from pydantic import BaseModel, ConfigDict, Field, model_validator
 SCHEMA_VERSION = 1
 
 
+def arrays_equal(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> bool:
+    """Same dtype, shape and values (NaN equal to NaN); two Nones are equal."""
+    if a is None or b is None:
+        return a is None and b is None
+    return (a.dtype == b.dtype and a.shape == b.shape
+            and bool(np.array_equal(a, b, equal_nan=a.dtype.kind in "fc")))
+
+
 class Room(BaseModel):
     """A room (region) of the map. `polygon` is a list of (x, y) vertices in metres."""
 
@@ -144,6 +152,11 @@ class InstanceGrid(BaseModel):
             return self.ids[self.indptr[k]:self.indptr[k + 1]]
         return self.ids[:0]
 
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, InstanceGrid):
+            return NotImplemented
+        return all(arrays_equal(getattr(self, k), getattr(other, k)) for k in ("cells", "indptr", "ids", "top"))
+
     @property
     def multi_occupancy_cells(self) -> int:
         """Number of cells holding more than one instance."""
@@ -195,6 +208,15 @@ class SceneMap(BaseModel):
         if unknown:
             raise ValueError(f"occupancy refers to unknown instance ids {sorted(unknown)[:5]}")
         return self
+
+    def __eq__(self, other: object) -> bool:
+        """Field-wise equality; arrays must match in dtype, shape and values (NaN == NaN)."""
+        if not isinstance(other, SceneMap):
+            return NotImplemented
+        arrays = ("room_map", "obstacles", "embeddings")
+        return (self.model_dump(exclude={"occupancy", *arrays}) == other.model_dump(exclude={"occupancy", *arrays})
+                and self.occupancy == other.occupancy
+                and all(arrays_equal(getattr(self, k), getattr(other, k)) for k in arrays))
 
     def instance(self, instance_id: int) -> Instance:
         for inst in self.instances:

@@ -71,6 +71,10 @@ _MATERIAL_ADJ = {"wood": "wooden", "wooden": "wooden", "metal": "metal", "steel"
                  "cotton": "cotton", "velvet": "velvet", "wicker": "wicker", "paper": "paper"}
 
 
+def _length(metres: float) -> str:
+    return f"{metres * 100:.0f} cm" if metres < 0.3 else f"{metres:.1f} m"
+
+
 def build_caption(label: str, tags: dict[str, str], size: tuple[float, float, float],
                   bottom: float, room: Optional[str]) -> str:
     """A plain caption from known attributes, e.g. "a red wooden chair in the office, about
@@ -82,9 +86,9 @@ def build_caption(label: str, tags: dict[str, str], size: tuple[float, float, fl
     text = f"{article} {noun}"
     if room:
         text += f" in the {room}"
-    text += f", about {size[2]:.1f} m tall and {max(size[0], size[1]):.1f} m wide"
+    text += f", about {_length(size[2])} tall and {_length(max(size[0], size[1]))} wide"
     if bottom >= 0.2:
-        text += f", {bottom:.1f} m above the floor"
+        text += f", {_length(bottom)} above the floor"
     extra = {k: v for k, v in tags.items() if k not in ("color", "material")}
     if extra:
         text += "; " + ", ".join(f"{k}: {v}" for k, v in sorted(extra.items()))

@@ -1,0 +1,124 @@
+"""Retrieval benchmarks (targets from DESIGN.md, "Performance targets"):
+
+(a) MTEFR wall time against a chat-completions server with a fixed 200 ms latency (the loopback
+    server answering with the offline model): target <= 1.2 x 200 ms per query (calls in parallel).
+(b) Retrieval overhead outside model calls on a 300-instance synthetic map: total `ask` latency
+    minus the time spent inside provider calls. Measured twice: with the offline model (its call
+    time is subtracted; the offline model is synchronous, so calls do not overlap) and with a
+    zero-cost FunctionModel returning canned valid JSON (nothing to subtract). Target p50 <= 2 ms.
+(c) A fully cached query (CachedModel, the same query asked again): target p50 <= 5 ms.
+
+Run: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/bench_retrieval.py [--queries N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import tempfile
+import time
+
+import numpy as np
+
+from iesm_agent.providers import FunctionModel, get_model
+from iesm_agent.providers.cache import CachedModel
+from iesm_agent.providers.loopback import LoopbackServer
+from iesm_agent.retrieval import Retriever
+from iesm_agent.store.mapstore import MapStore
+from iesm_agent.store.model import GridSpec, Instance, Room, SceneMap
+
+LABELS = ["chair", "table", "sofa", "bed", "lamp", "cabinet", "shelf", "plant", "tv", "mug", "book",
+          "pillow", "desk", "stool", "mirror", "picture", "rug", "vase", "clock", "sink"]
+COLORS = ["red", "blue", "green", "white", "black", "brown", "grey", "yellow"]
+MATERIALS = ["wood", "metal", "fabric", "leather", "glass", "plastic"]
+ROOMS = ["kitchen", "living room", "bedroom", "office", "bathroom", "hallway"]
+QUERIES = ["the red chair in the office", "something to sit on in the living room", "a wooden table",
+           "the lamp next to the bed", "blue glass vase in the kitchen", "a plant",
+           "the black leather sofa", "where can I put my books in the bedroom",
+           "grey metal cabinet in the hallway", "the mirror in the bathroom"]
+
+
+def synthetic_store(n: int = 300, seed: int = 0) -> MapStore:
+    rng = np.random.default_rng(seed)
+    rooms = [Room(id=i + 1, label=label) for i, label in enumerate(ROOMS)]
+    instances = []
+    for i in range(n):
+        label, color, material = LABELS[i % len(LABELS)], rng.choice(COLORS), rng.choice(MATERIALS)
+        room = rooms[int(rng.integers(len(rooms)))]
+        instances.append(Instance(id=i + 1, label=label, room_id=room.id, room_label=room.label,
+                                  caption=f"a {color} {material} {label}", tags={"color": str(color),
+                                                                                 "material": str(material)},
+                                  mean_height=float(rng.uniform(0.1, 2.0))))
+    return MapStore(SceneMap(scene_id="bench300", grid=GridSpec(cell_size=0.05, height=600, width=600),
+                             instances=instances, rooms=rooms))
+
+
+def canned(messages, options) -> str:
+    props = (options.json_schema or {}).get("properties", {})
+    if "scores" in props:
+        return json.dumps({"scores": {"obj": 4, "room": 2, "desc": 2, "abs": 1}, "hints": {}})
+    return json.dumps({"ranked_instance_ids": [1, 2]})
+
+
+def p50(xs: list[float]) -> float:
+    return statistics.median(xs)
+
+
+def overhead(retriever: Retriever, queries: list[str], repeat: int) -> list[float]:
+    out = []
+    retriever.ask(queries[0])  # warm-up: template compilation, lexicon loading
+    for _ in range(repeat):
+        for q in queries:
+            res = retriever.ask(q)
+            out.append(res.latency_ms - sum(c.latency_ms for c in res.calls))
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--queries", type=int, default=10, help="queries per measurement")
+    args = parser.parse_args()
+    queries = (QUERIES * (args.queries // len(QUERIES) + 1))[:args.queries]
+    rows = []
+
+    store = synthetic_store()
+    offline = get_model("offline")
+
+    # (a) 200 ms endpoint, gate + 4 experts concurrently
+    with LoopbackServer(offline, delay_s=0.2) as server:
+        model = get_model("openai-compat:offline", base_url=server.base_url)
+        retriever = Retriever(store, provider=model)
+        retriever.ask(queries[0])
+        walls = []
+        for q in queries:
+            t = time.perf_counter()
+            retriever.ask(q)
+            walls.append((time.perf_counter() - t) * 1000.0)
+        rows.append(("(a) MTEFR wall, 200 ms endpoint", p50(walls), 1.2 * 200, "ms"))
+
+    # (b) overhead outside model calls, 300 instances, G = 100 candidates
+    rows.append(("(b) overhead, offline model", p50(overhead(Retriever(store, provider=offline), queries, 2)),
+                 2.0, "ms"))
+    rows.append(("(b) overhead, zero-cost FunctionModel",
+                 p50(overhead(Retriever(store, provider=FunctionModel(canned)), queries, 5)), 2.0, "ms"))
+
+    # (c) cached: second run of the same queries
+    with tempfile.TemporaryDirectory() as cache_dir:
+        retriever = Retriever(store, provider=CachedModel(offline, cache_dir))
+        for q in queries:
+            retriever.ask(q)
+        cached = []
+        for q in queries:
+            res = retriever.ask(q)
+            assert res.cache_hits == len(res.calls), "expected every call to hit the cache"
+            cached.append(res.latency_ms)
+        rows.append(("(c) fully cached query", p50(cached), 5.0, "ms"))
+
+    print(f"{'benchmark':42s} {'p50':>9s} {'target':>9s}  ok")
+    for name, value, target, unit in rows:
+        print(f"{name:42s} {value:7.2f}{unit} {target:7.1f}{unit}  {'yes' if value <= target else 'NO'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,91 @@
+"""`iesm ask MAP QUERY`: retrieve the instance a sentence refers to, with the evidence."""
+
+from __future__ import annotations
+
+import asyncio
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+
+
+def open_store(map_ref: str):
+    """A MapStore from a `.iesm` path or the name of a shipped map (e.g. `apartment`)."""
+    from ..errors import IesmError
+    from ..resources import shipped_map
+    from ..store.mapstore import MapStore
+
+    path = Path(map_ref)
+    if not path.exists():
+        try:
+            path = shipped_map(map_ref)
+        except FileNotFoundError:
+            raise IesmError("no such map file, and no shipped map of that name", map_ref) from None
+    return MapStore.load(path)
+
+
+def ask_command(
+    map_ref: str = typer.Argument(..., metavar="MAP", help="A .iesm file or a shipped map name (e.g. apartment)."),
+    query: str = typer.Argument(..., help="The sentence naming the goal object."),
+    provider: str = typer.Option("offline", "--provider", "-p", help="Model spec, e.g. offline, openai:gpt-4o-mini."),
+    method: str = typer.Option("mtefr", "--method", "-m", help="mtefr, spr, keyword or experts:obj,desc,..."),
+    as_json: bool = typer.Option(False, "--json", help="Print the full result as JSON."),
+    explain: bool = typer.Option(False, "--explain", help="Explain the decision (weights, rankings, scores)."),
+    base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+    no_cache: bool = typer.Option(False, "--no-cache", help="Do not use the response cache (on by default except offline)."),
+    kappa: Optional[int] = typer.Option(None, "--kappa", help="Top-k per expert (paper: 2)."),
+    experts_dir: List[Path] = typer.Option([], "--experts-dir", help="Extra expert spec directory (repeatable)."),
+    prompts: Optional[Path] = typer.Option(None, "--prompts", help="Prompt directory overriding shipped templates."),
+) -> None:
+    """Retrieve the map instance QUERY refers to (MTEFR by default)."""
+    from ..config import load_settings
+    from ..providers import get_model
+    from ..retrieval import Retriever
+
+    store = open_store(map_ref)
+    config = load_settings(None, {"retrieval.kappa": kappa} if kappa is not None else {}).retrieval
+    model = get_model(provider, base_url=base_url, cache=not no_cache and provider != "offline")
+    retriever = Retriever(store, provider=model, method=method, config=config, prompts_dir=prompts,
+                          experts_dirs=experts_dir)
+
+    async def run():
+        try:
+            return await retriever.aask(query)
+        finally:
+            await retriever.aclose()
+
+    result = asyncio.run(run())
+    if as_json:
+        print(result.model_dump_json(indent=2))
+    else:
+        _print_human(result)
+    if explain:
+        print(result.explain())
+
+
+def _print_human(result) -> None:
+    from rich.console import Console
+    from rich.markup import escape
+
+    console = Console(highlight=False)
+    if result.instance_id is None:
+        console.print("[bold red]no instance found[/]")
+    else:
+        console.print(f"[bold green]#{result.instance_id}[/] [bold]{escape(result.label or '')}[/]"
+                      f" in {escape(result.room or 'no room')}")
+        if result.caption:
+            console.print(f"  {escape(result.caption)}")
+    if result.gate:
+        weights = "  ".join(f"{escape(e)} {w:.2f}" for e, w in sorted(result.gate.items(), key=lambda kv: -kv[1]))
+        console.print(f"gate: {weights}")
+    for expert, ids in result.experts.items():
+        picks = ", ".join(f"#{i} {escape(result.names.get(i, '?'))}" for i in ids) or "(nothing)"
+        console.print(f"  {escape(expert)}: {picks}")
+    console.print(f"[dim]{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached[/]")
+    errors = Console(stderr=True, highlight=False)
+    for failure in result.failures:
+        errors.print(f"[yellow]warning:[/] {escape(failure)}")
+
+
+def register(app: typer.Typer) -> None:
+    app.command("ask")(ask_command)

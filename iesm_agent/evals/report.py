@@ -1,0 +1,110 @@
+"""Run outputs: `summary.json`, `report.md` (paper Table 4 style O-SR table, ranking and cost,
+paired significance) and a PNG bar chart of O-SR by type per variant."""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+from typing import Sequence
+
+from .journal import ResultRecord
+from .metrics import QUERY_TYPES, TYPE_TITLES, summarize
+from .significance import compare_to_first
+
+PLOT = "osr_by_type.png"
+
+
+def build_summary(records: Sequence[ResultRecord], variants: Sequence[str], extra: dict | None = None) -> dict:
+    """Metrics per variant plus paired McNemar tests of the first variant against the others."""
+    summary = summarize(records, variants)
+    types = {r.id: r.type or "-" for r in records}
+    correct: dict[str, dict[str, bool]] = {v: {} for v in summary["methods"]}
+    for r in records:
+        correct[r.variant][r.id] = r.correct
+    summary["types"] = [t for t in QUERY_TYPES if t in set(types.values())]
+    summary["significance"] = compare_to_first(correct, types, list(summary["methods"]))
+    summary.update(extra or {})
+    return summary
+
+
+def _pct(value) -> str:
+    return "-" if value is None else f"{100 * value:.1f}"
+
+
+def render_markdown(summary: dict, plot: str | None) -> str:
+    methods, types = summary["methods"], summary["types"]
+    lines = ["# Evaluation report", ""]
+    run = summary.get("run", {})
+    if run:
+        lines += [f"Provider `{run.get('provider')}`, suites {', '.join(f'`{s}`' for s in run.get('suites', []))}, "
+                  f"{run.get('queries')} queries x {len(methods)} variants.", ""]
+    lines += ["## Object retrieval success rate (O-SR, %) by query type", "",
+              "| Method | " + " | ".join(TYPE_TITLES[t] for t in types) + " | type mean | overall |",
+              "|---|" + "---:|" * (len(types) + 2)]
+    for name, m in methods.items():
+        cells = [_pct(m["by_type"][t]["osr"]) if t in m["by_type"] else "-" for t in types]
+        lines.append(f"| {name} | " + " | ".join(cells)
+                     + f" | {_pct(m['overall']['osr_type_mean'])} | {_pct(m['overall']['osr'])} |")
+    lines += ["", "Queries per type: " + ", ".join(
+        f"{TYPE_TITLES[t]} {next(iter(methods.values()))['by_type'][t]['n']}" for t in types), ""]
+    if plot:
+        lines += [f"![O-SR by query type]({plot})", ""]
+    lines += ["## Ranking and cost", "",
+              "| Method | n | MRR | top-3 (%) | latency p50 (ms) | latency mean (ms) | tokens | cache hits "
+              "| queries with failures | candidate recall (%) |",
+              "|---|" + "---:|" * 9]
+    for name, m in methods.items():
+        o = m["overall"]
+        lines.append(f"| {name} | {o['n']} | {o['mrr']:.3f} | {_pct(o['top3'])} | {o['latency_ms_p50']:.1f} "
+                     f"| {o['latency_ms_mean']:.1f} | {o['tokens']} | {o['cache_hits']} "
+                     f"| {o['queries_with_failures']} | {_pct(o['candidate_recall'])} |")
+    if summary["significance"]:
+        lines += ["", "## Paired significance (exact McNemar, two-sided)", "",
+                  "`A only` / `B only`: queries only that variant got right.", "",
+                  "| A | B | type | n | A only | B only | p |", "|---|---|---|---:|---:|---:|---:|"]
+        for t in summary["significance"]:
+            title = TYPE_TITLES.get(t["type"], t["type"])
+            lines.append(f"| {t['a']} | {t['b']} | {title} | {t['n']} | {t['a_only']} | {t['b_only']} | {t['p']:.4f} |")
+    invalid = summary.get("invalid_lines", [])
+    if invalid:
+        lines += ["", f"## Skipped suite lines ({len(invalid)})", ""] + [f"- {e}" for e in invalid]
+    return "\n".join(lines) + "\n"
+
+
+def plot_osr(summary: dict, path: Path) -> bool:
+    """Grouped bar chart of O-SR by type per variant; False when matplotlib is missing."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return False
+    methods, types = summary["methods"], summary["types"]
+    width = 0.8 / max(len(methods), 1)
+    fig, ax = plt.subplots(figsize=(2.8 + 1.3 * len(types), 3.2), dpi=80)
+    for k, (name, m) in enumerate(methods.items()):
+        values = [100 * m["by_type"].get(t, {}).get("osr", 0.0) for t in types]
+        ax.bar([i + (k - (len(methods) - 1) / 2) * width for i in range(len(types))], values, width, label=name)
+    ax.set_xticks(range(len(types)), [TYPE_TITLES[t] for t in types])
+    ax.set_ylabel("O-SR (%)")
+    ax.set_ylim(0, 100)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return True
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
+def write_outputs(run_dir: Path, summary: dict) -> None:
+    """summary.json, report.md and the plot into `run_dir`."""
+    plotted = bool(summary["types"]) and plot_osr(summary, run_dir / PLOT)
+    _write_atomic(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")
+    _write_atomic(run_dir / "report.md", render_markdown(summary, PLOT if plotted else None))

@@ -1,0 +1,220 @@
+"""The eval runner: suites x variants (method [+ prompt dir]) with bounded concurrency.
+
+Each finished (query, variant) is appended to `RUN_DIR/results.jsonl` at once, so a killed run
+loses at most the queries in flight; `resume=True` skips the pairs already journaled. The run's
+configuration is kept in `RUN_DIR/run.json` and a resume under another configuration is refused.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import hashlib
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Optional
+
+from pydantic import BaseModel, ConfigDict
+
+from ..errors import IesmError
+from ..providers.base import Model
+from .journal import ResultRecord, append_record, read_journal, repair_journal
+from .report import build_summary, write_outputs
+from .suite import MapRegistry, Suite, SuiteEntry, load_suites
+
+RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
+BASE_METHODS = ("mtefr", "spr", "keyword")
+
+
+class Variant(BaseModel):
+    """A retrieval method, optionally with a prompt directory overriding the shipped templates."""
+
+    name: str
+    method: str
+    prompts_dir: Optional[str] = None
+
+
+class RunConfig(BaseModel):
+    """What determines a run's results; a resume must match it exactly."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    suites: list[str]
+    suites_sha256: str
+    variants: list[Variant]
+    provider: str
+    base_url: Optional[str] = None
+    cache: bool = False
+    skip_invalid: bool = False
+
+
+def split_methods(specs: list[str]) -> list[str]:
+    """Comma lists of methods; a bare expert name continues the `experts:` list before it,
+    so `mtefr,experts:obj,desc,spr` -> [mtefr, experts:obj,desc, spr]."""
+    methods: list[str] = []
+    for token in (t.strip() for spec in specs for t in spec.split(",")):
+        if not token:
+            continue
+        if token in BASE_METHODS or token.startswith("experts:") or not methods \
+                or not methods[-1].startswith("experts:"):
+            methods.append(token)
+        else:
+            methods[-1] += f",{token}"
+    return methods
+
+
+def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Variant]:
+    """One variant per method, or per (method, prompt dir) named `method@dirname`."""
+    if not methods:
+        raise IesmError("no retrieval method given", "--method")
+    if not prompt_dirs:
+        return [Variant(name=m, method=m) for m in dict.fromkeys(methods)]
+    labels: dict[str, Path] = {}
+    for d in map(Path, prompt_dirs):
+        if not d.is_dir():
+            raise IesmError("prompt directory does not exist", d)
+        label = d.resolve().name or "prompts"
+        labels[label if label not in labels else f"{label}{len(labels)}"] = d.resolve()
+    return [Variant(name=f"{m}@{label}", method=m, prompts_dir=str(d))
+            for m in dict.fromkeys(methods) for label, d in labels.items()]
+
+
+def make_config(suite_paths: list[str | Path], variants: list[Variant], provider: str, *,
+                base_url: str | None = None, cache: bool = False, skip_invalid: bool = False) -> RunConfig:
+    paths = [Path(p).resolve() for p in suite_paths]
+    digest = hashlib.sha256()
+    for path in paths:
+        try:
+            digest.update(path.read_bytes())
+        except OSError as exc:
+            raise IesmError(f"cannot read suite: {exc}", path) from exc
+    return RunConfig(suites=[str(p) for p in paths], suites_sha256=digest.hexdigest(), variants=variants,
+                     provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid)
+
+
+def prepare_run_dir(run_dir: Path, config: RunConfig, resume: bool) -> None:
+    """Refuse a non-empty run dir without `resume`, or a resume under another configuration;
+    then record the configuration."""
+    stored = run_dir / RUN_CONFIG
+    if resume and stored.exists():
+        try:
+            previous = RunConfig.model_validate_json(stored.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            raise IesmError(f"cannot read the stored run configuration: {exc}", stored) from exc
+        old, new = previous.model_dump(), config.model_dump()
+        changed = [k for k in new if old.get(k) != new[k]]
+        if changed:
+            raise IesmError(f"refusing to resume: this run was made with a different {', '.join(changed)} "
+                            "(start a new run directory instead)", stored)
+    elif run_dir.exists() and any(run_dir.iterdir()):
+        if not resume:
+            raise IesmError("run directory is not empty: pass --resume to continue that run, "
+                            "or choose another -o", run_dir)
+        raise IesmError(f"cannot resume: no {RUN_CONFIG} in a non-empty run directory", run_dir)
+    run_dir.mkdir(parents=True, exist_ok=True)
+    tmp = stored.with_suffix(".tmp")
+    tmp.write_text(config.model_dump_json(indent=2) + "\n", encoding="utf-8")
+    tmp.replace(stored)
+
+
+def _rank(ranking: list[int], accept: list[int]) -> Optional[int]:
+    accepted = set(accept)
+    return next((i for i, iid in enumerate(ranking, start=1) if iid in accepted), None)
+
+
+@dataclass
+class RunOutcome:
+    records: list[ResultRecord]
+    suite: Suite
+    done_before: int
+    new: int
+    wall_s: float
+
+
+def _build_model(config: RunConfig) -> Model:
+    from ..providers import get_model
+
+    return get_model(config.provider, base_url=config.base_url, cache=config.cache)
+
+
+async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = False, concurrency: int = 4,
+                   model: Model | None = None,
+                   on_start: Callable[[int], None] | None = None,
+                   on_result: Callable[[ResultRecord], None] | None = None) -> RunOutcome:
+    """Run (or resume) the evaluation described by `config` into `run_dir`. `model` overrides
+    the provider named in the config (tests); `on_start(n_pending)` and `on_result` drive a
+    progress display. The response cache (if on) lives in `$IESM_CACHE_DIR` or the user cache."""
+    from ..retrieval import Retriever
+    from ..store.mapstore import MapStore
+
+    if concurrency < 1:
+        raise IesmError("concurrency must be at least 1", "--concurrency")
+    run_dir = Path(run_dir)
+    registry = MapRegistry()
+    suite = load_suites(config.suites, skip_invalid=config.skip_invalid, registry=registry)
+    prepare_run_dir(run_dir, config, resume)
+    journal = run_dir / RESULTS
+    repair_journal(journal)
+    previous = read_journal(journal)
+    done = {r.key for r in previous}
+    jobs = [(e, v) for e in suite.entries for v in config.variants if (e.query.id, v.name) not in done]
+    if on_start:
+        on_start(len(jobs))
+
+    model = model or _build_model(config)
+    stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
+    retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
+                                            cache=False)
+                  for path, store in stores.items() for v in config.variants}
+    new: list[ResultRecord] = []
+    started = time.perf_counter()
+
+    with journal.open("a", encoding="utf-8") as handle:
+        pending = iter(jobs)
+
+        async def worker() -> None:
+            for entry, variant in pending:
+                record = await _ask(retrievers[entry.map_path, variant.name], entry, variant)
+                append_record(handle, record)
+                new.append(record)
+                if on_result:
+                    on_result(record)
+
+        tasks = [asyncio.create_task(worker()) for _ in range(min(concurrency, max(len(jobs), 1)))]
+        try:
+            await asyncio.gather(*tasks)
+        finally:
+            for task in tasks:
+                task.cancel()
+            await asyncio.gather(*tasks, return_exceptions=True)
+            await model.aclose()
+    return RunOutcome(records=previous + new, suite=suite, done_before=len(previous), new=len(new),
+                      wall_s=time.perf_counter() - started)
+
+
+async def _ask(retriever, entry: SuiteEntry, variant: Variant) -> ResultRecord:
+    """One retrieval as a record; rank and ranking cover the ids the method scored (the rest of
+    the candidate set follows in arbitrary candidate order and would inflate MRR)."""
+    q = entry.query
+    res = await retriever.aask(q.query, target=q.target)
+    scored = [i for i in res.ranking if i in res.scores]
+    return ResultRecord(
+        id=q.id, variant=variant.name, method=variant.method, type=q.type, map=q.map, query=q.query,
+        target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
+        rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
+        tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures,
+        candidate_recall=res.candidate_recall)
+
+
+def write_run_outputs(run_dir: str | Path, config: RunConfig, outcome: RunOutcome) -> dict:
+    """Summary (with run facts and skipped suite lines), report and plot of a finished run."""
+    summary = build_summary(outcome.records, [v.name for v in config.variants], {
+        "run": {"provider": config.provider, "suites": config.suites, "queries": len(outcome.suite.entries),
+                "variants": [v.model_dump() for v in config.variants], "results": len(outcome.records),
+                "resumed_with": outcome.done_before, "new_results": outcome.new,
+                "wall_s": round(outcome.wall_s, 3),
+                "results_per_s": round(outcome.new / outcome.wall_s, 2) if outcome.wall_s > 0 else None},
+        "invalid_lines": [str(e) for e in outcome.suite.errors],
+    })
+    write_outputs(Path(run_dir), summary)
+    return summary

@@ -1,0 +1,235 @@
+"""Shipped word lists (JSON beside this file) and the text primitives built on them.
+
+`load_lexicon()` (cached) compiles the data once into lookup tables: a phrase table keyed by
+lemma tuples (categories, generic nouns, rooms, colours, materials, shapes, sizes,
+descriptors, affordance cues), the is-a closure of categories and the query grammar words.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+
+_TOKEN = re.compile(r"[a-z0-9]+(?:['\-][a-z0-9]+)*")
+
+#: span kinds; "cue" values are affordance entry indices (as strings)
+KINDS = ("cat", "gen", "room", "color", "material", "shape", "size", "desc", "cue")
+ATTRIBUTE_KINDS = ("color", "material", "shape", "size", "desc")
+
+
+@dataclass(frozen=True)
+class Span:
+    """Tokens [start, end) matched one lexicon phrase; `kinds` lists (kind, value) pairs."""
+
+    start: int
+    end: int
+    kinds: tuple[tuple[str, str], ...]
+
+    def values(self, kind: str) -> list[str]:
+        return [v for k, v in self.kinds if k == kind]
+
+    def has(self, kind: str) -> bool:
+        return any(k == kind for k, _ in self.kinds)
+
+
+@dataclass
+class Lexicon:
+    """Compiled lexicon. Build with `load_lexicon()`."""
+
+    phrases: dict[tuple[str, ...], tuple[tuple[str, str], ...]]
+    max_len: int
+    ancestors: dict[str, frozenset[str]]
+    generic: dict[str, dict[str, float]]
+    affordances: list[dict[str, float]]
+    near_colors: dict[str, frozenset[str]]
+    related_materials: dict[str, frozenset[str]]
+    room_related: dict[tuple[str, str], float]
+    shades: frozenset[str]
+    words: dict[str, frozenset[str]]  # language.json word lists by name
+    commands: tuple[tuple[str, ...], ...]
+    lemmas: dict[str, str]
+    vocab: frozenset[str]
+    _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
+
+    # -- tokens -----------------------------------------------------------------------------
+    def lemma(self, token: str) -> str:
+        """Base form of a lowercase token (plural nouns, -ing verbs; irregulars from the word list),
+        vocabulary-guided. Past participles stay as they are ("cushioned" is not "cushion")."""
+        hit = self._lemma_cache.get(token)
+        if hit is not None:
+            return hit
+        result = self.lemmas.get(token) or _guess_lemma(token, self.vocab)
+        if len(self._lemma_cache) < 200_000:
+            self._lemma_cache[token] = result
+        return result
+
+    def tokens(self, text: str) -> list[str]:
+        """Lowercase word tokens of `text` (hyphenated words kept whole), not lemmatised."""
+        return _TOKEN.findall(text.lower().replace("\u2019", "'"))
+
+    # -- phrases ----------------------------------------------------------------------------
+    def scan(self, lemmas: list[str]) -> list[Span]:
+        """Greedy longest-match of lexicon phrases over `lemmas`, left to right.
+
+        A shade followed by a colour ("light blue") is one colour span."""
+        spans: list[Span] = []
+        i, n = 0, len(lemmas)
+        while i < n:
+            if lemmas[i] in self.shades and i + 1 < n:
+                nxt = self.phrases.get((lemmas[i + 1],), ())
+                colors = tuple(kv for kv in nxt if kv[0] == "color")
+                if colors and (lemmas[i], lemmas[i + 1]) not in self.phrases:
+                    spans.append(Span(i, i + 2, colors))
+                    i += 2
+                    continue
+            for size in range(min(self.max_len, n - i), 0, -1):
+                kinds = self.phrases.get(tuple(lemmas[i:i + size]))
+                if kinds:
+                    spans.append(Span(i, i + size, kinds))
+                    i += size
+                    break
+            else:
+                i += 1
+        return spans
+
+    def phrase(self, text: str) -> tuple[tuple[str, str], ...]:
+        """(kind, value) pairs of `text` if the whole text is one lexicon phrase."""
+        return self.phrases.get(tuple(self.lemma(t) for t in self.tokens(text)), ())
+
+    # -- similarities -----------------------------------------------------------------------
+    def concept_sim(self, query: str, label: str) -> float:
+        """How well category `label` answers a request for category `query` (0..1)."""
+        if query == label:
+            return 1.0
+        up_label = self.ancestors.get(label, frozenset())
+        if query in up_label:
+            return 0.9
+        up_query = self.ancestors.get(query, frozenset())
+        if label in up_query:
+            return 0.6
+        if up_label & up_query:
+            return 0.35
+        return 0.0
+
+    def room_sim(self, a: str, b: str) -> float:
+        if a == b:
+            return 1.0
+        return self.room_related.get((a, b), 0.0)
+
+    def attr_sim(self, kind: str, query: str, value: str) -> float:
+        """Match of a query attribute against a candidate attribute of the same kind."""
+        if query == value:
+            return 1.0
+        if kind == "color" and value in self.near_colors.get(query, ()):
+            return 0.5
+        if kind == "material" and value in self.related_materials.get(query, ()):
+            return 0.5
+        return 0.0
+
+
+def _guess_lemma(token: str, vocab: frozenset[str]) -> str:
+    candidates: list[str] = []
+    if token.endswith("ies") and len(token) > 4:
+        candidates.append(token[:-3] + "y")
+    if token.endswith("es") and len(token) > 3:
+        candidates.append(token[:-2])
+    if token.endswith("s") and not token.endswith(("ss", "us", "is")) and len(token) > 3:
+        candidates.append(token[:-1])
+    if token.endswith("ing") and len(token) > 5:
+        stem = token[:-3]
+        candidates += [stem, stem + "e"]
+        if len(stem) > 2 and stem[-1] == stem[-2]:
+            candidates.append(stem[:-1])
+    for cand in candidates:
+        if cand in vocab:
+            return cand
+    if token in vocab:
+        return token
+    if token.endswith("s") and not token.endswith(("ss", "us", "is")) and len(token) > 3:
+        return token[:-1]
+    return token
+
+
+def _read(name: str) -> dict:
+    return json.loads(resources.files(__name__).joinpath(name).read_text(encoding="utf-8"))
+
+
+def _closure(parents: dict[str, list[str]]) -> dict[str, frozenset[str]]:
+    out: dict[str, frozenset[str]] = {}
+
+    def up(node: str, seen: frozenset[str]) -> frozenset[str]:
+        if node in out:
+            return out[node]
+        result: set[str] = set()
+        for parent in parents.get(node, ()):
+            if parent not in seen:
+                result |= {parent} | up(parent, seen | {node})
+        out[node] = frozenset(result)
+        return out[node]
+
+    for node in parents:
+        up(node, frozenset())
+    return out
+
+
+def _weights(core: list[str], related: list[str]) -> dict[str, float]:
+    """Core categories weigh 1.0 down to 0.8 in list order (most typical first), related 0.5."""
+    weights = {c: 0.5 for c in related}
+    for i, c in enumerate(core):
+        weights.setdefault(c, 0.0)
+        weights[c] = max(weights[c], 1.0 - min(0.2, 0.02 * i))
+    return weights
+
+
+@lru_cache(maxsize=1)
+def load_lexicon() -> Lexicon:
+    """Load and compile the shipped lexicon (once per process)."""
+    cats, rooms, attrs = _read("categories.json"), _read("rooms.json"), _read("attributes.json")
+    affs, lang = _read("affordances.json"), _read("language.json")
+
+    raw: list[tuple[str, str, str]] = []  # (surface phrase, kind, value)
+    for canon, syns in cats["groups"].items():
+        raw += [(s, "cat", canon) for s in [canon, *syns]]
+    for noun in cats["generic"]:  # a class noun's own synonyms ("seating") are class nouns too
+        raw += [(s, "gen", noun) for s in [noun, *cats["groups"].get(noun, [])]]
+    for canon, syns in rooms["rooms"].items():
+        raw += [(s, "room", canon) for s in [canon, *syns]]
+    for kind, section in (("color", "colors"), ("material", "materials"), ("shape", "shapes"),
+                          ("size", "sizes"), ("desc", "descriptors")):
+        for canon, syns in attrs[section].items():
+            raw += [(s, kind, canon) for s in [canon, *syns]]
+    for index, entry in enumerate(affs["entries"]):
+        raw += [(c, "cue", str(index)) for c in entry["cues"]]
+
+    lemmas = dict(lang["lemmas"])
+    tok = _TOKEN.findall
+    vocab = frozenset(w for surface, _, _ in raw for w in tok(surface.lower()))
+    lex = Lexicon(
+        phrases={}, max_len=1, ancestors=_closure(cats["parents"]),
+        generic={noun: _weights([noun, *g["core"]], g["related"]) for noun, g in cats["generic"].items()},
+        affordances=[_weights(e["core"], e["related"]) for e in affs["entries"]],
+        near_colors={group[0]: frozenset(group[1:]) for group in attrs["near_colors"]},
+        related_materials={group[0]: frozenset(group[1:]) for group in attrs["related_materials"]},
+        room_related={**{(a, b): s for a, b, s in rooms["related"]}, **{(b, a): s for a, b, s in rooms["related"]}},
+        shades=frozenset(attrs["shades"]),
+        words={name: frozenset(lang[name]) for name in
+               ("skip", "boundaries", "abstract", "collective", "collective_strict", "weak_heads", "ignore")}
+        | {"room_modifiers": frozenset(rooms["modifiers"])},
+        commands=(),
+        lemmas=lemmas, vocab=vocab,
+    )
+    phrases: dict[tuple[str, ...], list[tuple[str, str]]] = {}
+    for surface, kind, value in raw:
+        key = tuple(lex.lemma(t) for t in tok(surface.lower()))
+        if key and (kind, value) not in phrases.setdefault(key, []):
+            phrases[key].append((kind, value))
+    lex.phrases = {k: tuple(v) for k, v in phrases.items()}
+    lex.max_len = max(len(k) for k in phrases)
+    lex.commands = tuple(sorted({tuple(tok(c)) for c in lang["commands"]}, key=len, reverse=True))
+    return lex
+
+
+__all__ = ["ATTRIBUTE_KINDS", "KINDS", "Lexicon", "Span", "load_lexicon"]

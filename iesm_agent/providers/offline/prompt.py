@@ -1,0 +1,103 @@
+"""Read a rendered prompt the way an LLM would: which task, the fenced query, candidates,
+experts, the expert's focus line and the ranking length."""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+
+from ..base import Message
+
+_AT_MOST = re.compile(r"at most\s+(\d+)", re.I)
+_ROLE_WORDS = {
+    "obj": ("category", "categories", "label", "object name", "object type", "class"),
+    "room": ("room", "spatial", "location", "located", "where "),
+    "desc": ("colour", "color", "material", "appearance", "visual", "caption", "descript",
+             "attribute", "texture", "shape", "size", "style"),
+    "abs": ("function", "intent", "purpose", "abstract", "implicit", "afford", "used for", "what it is for"),
+}
+
+
+@dataclass
+class Prompt:
+    """What the offline model understood from the messages."""
+
+    task: str                                  # "gate" | "rank" | "keyword" | "unknown"
+    query: str = ""
+    candidate_lines: list[str] = field(default_factory=list)  # one JSON object per line
+    experts: list[dict] = field(default_factory=list)
+    focus: str = ""
+    hint: str = ""
+    kappa: int = 2
+
+
+def read_prompt(messages: list[Message]) -> Prompt:
+    """Parse the rendered prompt; missing pieces stay empty, nothing raises."""
+    text = "\n".join(m.text() for m in messages if m.role != "assistant")
+    if "ranked_instance_ids" in text:
+        task = "rank"
+    elif '"scores"' in text:
+        task = "gate"
+    elif '"object"' in text and '"room"' in text:
+        task = "keyword"
+    else:
+        task = "unknown"
+    prompt = Prompt(task=task, query=_fenced_string(text, "query"), hint=_fenced_string(text, "hint"))
+    prompt.focus = (_between(text, "focus") or "").strip()
+    kappa = _AT_MOST.match(text, max(0, text.lower().rfind("at most")))
+    if kappa:
+        prompt.kappa = max(1, int(kappa.group(1)))
+    prompt.candidate_lines = _lines(text, "candidates")
+    prompt.experts = [e for e in _json_objects(_lines(text, "experts")) if isinstance(e.get("name"), str)]
+    return prompt
+
+
+def focus_role(focus: str) -> str:
+    """The expert role a focus line asks for: the role whose keyword comes first; "all" if none."""
+    low = focus.lower()
+    best, best_pos = "all", len(low) + 1
+    for role, words in _ROLE_WORDS.items():
+        for w in words:
+            pos = low.find(w)
+            if 0 <= pos < best_pos:
+                best, best_pos = role, pos
+    return best
+
+
+def _between(text: str, tag: str) -> str | None:
+    start = text.find(f"<{tag}>")
+    if start < 0:
+        return None
+    start += len(tag) + 2
+    end = text.find(f"</{tag}>", start)
+    return text[start:end] if end >= 0 else None
+
+
+def _fenced_string(text: str, name: str) -> str:
+    raw = (_between(text, name) or "").strip()
+    if not raw:
+        return ""
+    try:
+        value = json.loads(raw)
+    except ValueError:
+        return raw
+    return value if isinstance(value, str) else raw
+
+
+def _lines(text: str, name: str) -> list[str]:
+    body = _between(text, name) or ""
+    return [ln for ln in (raw.strip().rstrip(",") for raw in body.splitlines()) if ln]
+
+
+def _json_objects(lines: list[str]) -> list[dict]:
+    try:
+        items = json.loads("[" + ",".join(lines) + "]")
+    except ValueError:
+        items = []
+        for line in lines:
+            try:
+                items.append(json.loads(line))
+            except ValueError:
+                continue
+    return [item for item in items if isinstance(item, dict)]

@@ -1,0 +1,112 @@
+"""Model calls of one query, traced: prompt hashes, raw reply, latency, tokens, cache, errors.
+
+A call never raises on model misbehaviour: an exception from the provider becomes the trace's
+`error` and a line in `failures`, and the caller carries on without that reply.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..prompting import PromptLibrary
+from ..providers.base import ChatOptions, Message, Model
+from .fusion import FusionResult
+from .replies import parse_ranking
+from .result import REPLY_CHARS, CallTrace
+
+
+def prompt_sha256(messages: list[Message]) -> str:
+    """sha256 (hex) of the rendered messages, roles included."""
+    h = hashlib.sha256()
+    for m in messages:
+        h.update(m.role.encode())
+        h.update(b"\x00")
+        h.update(m.text().encode())
+        h.update(b"\x01")
+    return h.hexdigest()
+
+
+@dataclass
+class Reply:
+    """A finished call: its trace and the reply text (None when the call raised)."""
+
+    trace: CallTrace
+    text: str | None
+
+
+@dataclass
+class Session:
+    """Renders prompts and runs calls for one query; `record`/`reject` keep traces and failures
+    in a deterministic order (the caller's, not completion order)."""
+
+    model: Model
+    prompts: PromptLibrary
+    template_hashes: dict[str, str]
+    calls: list[CallTrace] = field(default_factory=list)
+    failures: list[str] = field(default_factory=list)
+
+    def render(self, template: str, **variables: Any) -> list[Message]:
+        return self.prompts.render(template, **variables)
+
+    def _template_hash(self, template: str) -> str:
+        if template not in self.template_hashes:
+            self.template_hashes[template] = self.prompts.source_hash(template)
+        return self.template_hashes[template]
+
+    async def call(self, name: str, template: str, messages: list[Message],
+                   schema: dict[str, Any] | None = None) -> Reply:
+        trace = CallTrace(name=name, template=template, template_hash=self._template_hash(template),
+                          prompt_sha256=prompt_sha256(messages))
+        options = ChatOptions(temperature=0.0,
+                              json_schema=schema if self.model.capabilities.json_schema else None)
+        try:
+            completion = await self.model.acomplete(messages, options)
+        except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
+            trace.error = f"{type(exc).__name__}: {exc}"[:500]
+            return Reply(trace, None)
+        trace.reply = completion.text[:REPLY_CHARS]
+        trace.latency_ms = completion.latency_ms
+        trace.prompt_tokens = completion.usage.prompt_tokens
+        trace.completion_tokens = completion.usage.completion_tokens
+        trace.cached = completion.cached
+        return Reply(trace, completion.text)
+
+    def record(self, reply: Reply) -> str | None:
+        """Keep the trace; a failed call becomes a failure. Returns the reply text or None."""
+        self.calls.append(reply.trace)
+        if reply.text is None:
+            self.failures.append(f"{reply.trace.name}: call failed: {reply.trace.error}")
+        return reply.text
+
+    def reject(self, reply: Reply, reason: str) -> None:
+        """Mark a recorded reply as unusable (parse or validation failure)."""
+        reply.trace.error = reason[:500]
+        self.failures.append(f"{reply.trace.name}: {reason}"[:500])
+
+    def ranking(self, reply: Reply, candidates: frozenset[int], kappa: int) -> list[int] | None:
+        """Record a ranking reply and validate it against `candidates`: None (recorded as a
+        failure) when the call failed or the reply is unusable; dropped entries are recorded."""
+        text = self.record(reply)
+        if text is None:
+            return None
+        try:
+            ids, dropped = parse_ranking(text, candidates, kappa)
+        except ValueError as exc:
+            self.reject(reply, f"unusable reply, left out of the fusion ({exc})")
+            return None
+        if dropped:
+            self.failures.append(f"{reply.trace.name}: dropped entries that are not candidate ids: "
+                                 f"{[str(d)[:20] for d in dropped[:5]]}")
+        return ids
+
+
+@dataclass
+class Outcome:
+    """What a retrieval method decided, before it becomes a `RetrievalResult`."""
+
+    fusion: FusionResult | None = None
+    gate: dict[str, float] = field(default_factory=dict)
+    hints: dict[str, str] = field(default_factory=dict)
+    experts: dict[str, list[int]] = field(default_factory=dict)

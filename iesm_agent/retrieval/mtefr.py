@@ -1,0 +1,77 @@
+"""MTEFR: a gate LLM weights the experts, each expert ranks the candidates, fusion decides.
+
+By default the gate and every expert run concurrently (one model round trip per query). With
+`skip_below` set (cost-saving mode) the gate runs first; only experts whose weight reaches the
+threshold are called, and they get the gate's hints. A single expert needs no gate (weight 1).
+"""
+
+from __future__ import annotations
+
+import asyncio
+from typing import Callable, Sequence
+
+from ..config import RetrievalConfig
+from .calls import Outcome, Reply, Session
+from .experts import ExpertSpec
+from .fusion import fuse
+from .replies import GATE_SCHEMA, parse_gate, ranking_schema
+
+#: candidate views (dicts of the allowed fields) for a field set
+Views = Callable[[Sequence[str]], list[dict]]
+
+
+def _expert_call(session: Session, spec: ExpertSpec, query: str, views: Views, kappa: int, hint: str = ""):
+    messages = session.render(spec.template, query=query, focus=spec.focus, hint=hint,
+                              candidates=views(spec.fields), kappa=kappa)
+    return session.call(spec.name, spec.template, messages, ranking_schema(kappa))
+
+
+def _gate_weights(session: Session, reply: Reply, names: list[str]) -> tuple[dict[str, float], dict[str, str]]:
+    uniform = {name: 1.0 / len(names) for name in names}
+    text = session.record(reply)
+    if text is None:
+        return uniform, {}
+    try:
+        return parse_gate(text, names)
+    except ValueError as exc:
+        session.reject(reply, f"unusable reply ({exc}); uniform weights used")
+        return uniform, {}
+
+
+async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], candidate_ids: Sequence[int],
+                    views: Views, config: RetrievalConfig) -> Outcome:
+    """Gate + experts + fusion over `candidate_ids`; model misbehaviour is recorded, never raised."""
+    kappa, names = config.kappa, [s.name for s in specs]
+    gate_messages = None
+    if len(specs) > 1:
+        experts = [{"name": s.name, "gate_description": s.gate_description} for s in specs]
+        gate_messages = session.render("gate.j2", query=query, experts=experts)
+
+    if gate_messages is None:
+        weights, hints, active = {names[0]: 1.0}, {}, list(specs)
+        replies = await asyncio.gather(*(_expert_call(session, s, query, views, kappa) for s in active))
+    elif config.skip_below is None:
+        active = list(specs)
+        gate_reply, *replies = await asyncio.gather(
+            session.call("gate", "gate.j2", gate_messages, GATE_SCHEMA),
+            *(_expert_call(session, s, query, views, kappa) for s in active))
+        weights, hints = _gate_weights(session, gate_reply, names)
+    else:
+        gate_reply = await session.call("gate", "gate.j2", gate_messages, GATE_SCHEMA)
+        weights, hints = _gate_weights(session, gate_reply, names)
+        top = max(weights.values())
+        active = [s for s in specs if weights[s.name] >= min(config.skip_below, top)]
+        replies = await asyncio.gather(*(_expert_call(session, s, query, views, kappa, hints.get(s.name, ""))
+                                         for s in active))
+
+    candidates = frozenset(candidate_ids)
+    rankings = {}
+    for spec, reply in zip(active, replies):
+        ids = session.ranking(reply, candidates, kappa)
+        if ids is not None:
+            rankings[spec.name] = ids
+    fusion = fuse(weights, rankings, kappa=kappa, gamma=config.gamma, mu=config.mu)
+    if fusion.uniform_fallback:
+        session.failures.append("fusion: no expert with a positive gate weight returned a ranking; "
+                                "uniform weights over the others used")
+    return Outcome(fusion=fusion, gate=weights, hints=hints, experts=rankings)

@@ -1,0 +1,88 @@
+"""What one retrieval returns: the chosen instance, the fused ranking and the evidence trail."""
+
+from __future__ import annotations
+
+from typing import Optional
+
+from pydantic import BaseModel, Field
+
+#: raw replies are kept up to this many characters in the trace
+REPLY_CHARS = 2000
+
+
+class CallTrace(BaseModel):
+    """One model call: which prompt (template hash, sha256 of the rendered messages), the raw
+    reply (truncated), cost, and the error if the call or its parsing failed."""
+
+    name: str
+    template: str
+    template_hash: str
+    prompt_sha256: str
+    reply: str = ""
+    latency_ms: float = 0.0
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
+    cached: bool = False
+    error: Optional[str] = None
+
+
+class RetrievalResult(BaseModel):
+    """Outcome of `Retriever.ask`. `ranking` orders the whole candidate set: ids that scored,
+    best first by U, then the rest in candidate order. `scores`/`sum_scores`/`peak_scores` are
+    U, S_sum and P of the scored ids; `gate` the normalised expert weights; `experts` each
+    expert's validated top-kappa; `deciding_expert` the one that most separates the chosen instance
+    from the runner-up; `names` a display name ("label (room)") for the ids mentioned."""
+
+    query: str
+    method: str
+    instance_id: Optional[int] = None
+    label: Optional[str] = None
+    room: Optional[str] = None
+    caption: Optional[str] = None
+    ranking: list[int] = Field(default_factory=list)
+    scores: dict[int, float] = Field(default_factory=dict)
+    sum_scores: dict[int, float] = Field(default_factory=dict)
+    peak_scores: dict[int, float] = Field(default_factory=dict)
+    lam: Optional[float] = None
+    kappa: Optional[int] = None
+    deciding_expert: Optional[str] = None
+    gate: dict[str, float] = Field(default_factory=dict)
+    hints: dict[str, str] = Field(default_factory=dict)
+    experts: dict[str, list[int]] = Field(default_factory=dict)
+    names: dict[int, str] = Field(default_factory=dict)
+    calls: list[CallTrace] = Field(default_factory=list)
+    failures: list[str] = Field(default_factory=list)
+    candidate_ids: list[int] = Field(default_factory=list)
+    instances_considered: int = 0
+    target: Optional[int] = None
+    candidate_recall: Optional[bool] = None
+    latency_ms: float = 0.0
+    tokens: int = 0
+    cache_hits: int = 0
+
+    def explain(self, top: int = 3) -> str:
+        """Why this instance: gate weights, each expert's top-kappa, U/S/P of the `top` best."""
+        name = self.names.get
+        lines = [f"query: {self.query!r}  method: {self.method}"]
+        if self.instance_id is None:
+            lines.append("chosen: nothing (no candidate scored)")
+        else:
+            lines.append(f"chosen: #{self.instance_id} {name(self.instance_id, '?')}")
+        if self.gate:
+            weights = ", ".join(f"{e} {w:.2f}" for e, w in sorted(self.gate.items(), key=lambda kv: -kv[1]))
+            lines.append(f"gate weights: {weights}")
+        for expert, ids in self.experts.items():
+            picks = ", ".join(f"#{i} {name(i, '?')}" for i in ids) or "(nothing)"
+            lines.append(f"  {expert} expert: {picks}")
+        scored = [i for i in self.ranking if i in self.scores][:top]
+        for i in scored:
+            voters = [e for e, ids in self.experts.items() if i in ids]
+            lines.append(f"  #{i} {name(i, '?')}: U={self.scores[i]:.3f} "
+                         f"S={self.sum_scores.get(i, 0.0):.3f} P={self.peak_scores.get(i, 0.0):.3f}"
+                         f" (ranked by {', '.join(voters) or 'none'})")
+        if self.deciding_expert:
+            lines.append(f"deciding expert: {self.deciding_expert} (most separates #{self.instance_id} "
+                         "from the runner-up)")
+        for failure in self.failures:
+            lines.append(f"failure: {failure}")
+        return "\n".join(lines)

@@ -1,0 +1,129 @@
+"""`Retriever`: one query in, one `RetrievalResult` out, whatever the model does.
+
+Methods: `mtefr` (gate + all experts + fusion), `experts:<a>,<b>` (MTEFR restricted to those
+experts, the paper's ablations), `spr` (single pass over all fields) and `keyword` (HOV-SG style).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from typing import Any, Iterable, Sequence
+
+from ..config import RetrievalConfig
+from ..errors import IesmError
+from ..prompting import Fenced, PromptLibrary
+from ..providers import Model, get_model
+from .baselines import run_keyword, run_spr
+from .calls import Outcome, Session
+from .candidates import Candidates, select_candidates
+from .experts import ExpertSpec, load_experts
+from .fusion import fuse
+from .mtefr import run_mtefr
+from .result import RetrievalResult
+
+METHODS = ("mtefr", "spr", "keyword", "experts:<name>,<name>")
+#: ids whose display names a result carries besides the experts' picks
+_NAMED_TOP = 5
+
+
+def resolve_method(method: str, registry: dict[str, ExpertSpec]) -> tuple[str, list[ExpertSpec]]:
+    """(normalised method, experts it uses); unknown methods or experts raise IesmError."""
+    method = method.strip()
+    if method in ("spr", "keyword"):
+        return method, []
+    if method == "mtefr":
+        if not registry:
+            raise IesmError("no expert specs found", "experts")
+        return method, list(registry.values())
+    if method.startswith("experts:"):
+        names = list(dict.fromkeys(n.strip() for n in method[len("experts:"):].split(",") if n.strip()))
+        unknown = [n for n in names if n not in registry]
+        if not names or unknown:
+            raise IesmError(f"unknown expert(s) {unknown or names}; known: {', '.join(registry)}", "method", method)
+        return f"experts:{','.join(names)}", [registry[n] for n in names]
+    raise IesmError(f"unknown retrieval method {method!r}; known: {', '.join(METHODS)}", "method")
+
+
+class Retriever:
+    """Answers queries over `store` (a MapStore) with `provider` (a spec such as "offline" or a
+    `Model`). `cache` as in `providers.get_model`. Never raises on model misbehaviour: failures
+    are recorded in the result."""
+
+    def __init__(self, store: Any, provider: str | Model = "offline", method: str = "mtefr",
+                 config: RetrievalConfig | None = None, prompts_dir: str | Path | None = None,
+                 experts_dirs: Iterable[str | Path] = (), cache: bool | str | Path | None = None):
+        self.store = store
+        self.config = config or RetrievalConfig()
+        self.prompts = PromptLibrary([prompts_dir] if prompts_dir else [])
+        self.registry = load_experts(experts_dirs)
+        self.method, self.experts = resolve_method(method, self.registry)
+        self.model = get_model(provider, cache=cache)
+        self._views: dict[tuple[str, ...], dict[int, dict]] = {}
+        self._template_hashes: dict[str, str] = {}
+
+    def _candidate_views(self, ids: Sequence[int]):
+        def views(fields: Sequence[str]) -> list[dict]:
+            cache = self._views.setdefault(tuple(fields), {})
+            out = []
+            for i in ids:
+                if i not in cache:
+                    cache[i] = Fenced(self.store.candidate_view(i, list(fields)))
+                out.append(cache[i])
+            return out
+        return views
+
+    async def aask(self, query: str, *, target: int | None = None) -> RetrievalResult:
+        """Retrieve the instance `query` refers to; `target` (ground truth) records candidate recall."""
+        started = time.perf_counter()
+        candidates = select_candidates(self.store, query, self.config.max_candidates, target)
+        session = Session(self.model, self.prompts, self._template_hashes)
+        views = self._candidate_views(candidates.ids)
+        if self.method == "keyword":
+            outcome = await run_keyword(session, self.store, query, self.config)
+        elif not candidates.ids:
+            outcome = Outcome()
+        elif self.method == "spr":
+            outcome = await run_spr(session, query, candidates.ids, views, self.config)
+        else:
+            outcome = await run_mtefr(session, query, self.experts, candidates.ids, views, self.config)
+        return self._result(query, outcome, session, candidates, target, started)
+
+    def ask(self, query: str, *, target: int | None = None) -> RetrievalResult:
+        """Synchronous `aask`; from inside a running event loop it runs on a worker thread."""
+        try:
+            asyncio.get_running_loop()
+        except RuntimeError:
+            return asyncio.run(self.aask(query, target=target))
+        with ThreadPoolExecutor(1) as pool:
+            return pool.submit(asyncio.run, self.aask(query, target=target)).result()
+
+    async def aclose(self) -> None:
+        await self.model.aclose()
+
+    def _name(self, instance_id: int) -> str:
+        view = self.store.candidate_view(instance_id, ["label", "room"])
+        return f"{view['label']} ({view['room']})" if view["room"] else view["label"]
+
+    def _result(self, query: str, outcome: Outcome, session: Session, candidates: Candidates,
+                target: int | None, started: float) -> RetrievalResult:
+        cfg = self.config
+        fusion = outcome.fusion or fuse({}, {}, kappa=cfg.kappa, gamma=cfg.gamma, mu=cfg.mu)
+        seen = set(fusion.ranking)
+        ranking = list(fusion.ranking) + [i for i in candidates.ids if i not in seen]
+        chosen = self.store.candidate_view(fusion.best, ["label", "room", "caption"]) if fusion.best is not None else {}
+        mentioned = {i for ids in outcome.experts.values() for i in ids} | set(ranking[:_NAMED_TOP])
+        calls = session.calls
+        return RetrievalResult(
+            query=query, method=self.method, instance_id=fusion.best,
+            label=chosen.get("label"), room=chosen.get("room"), caption=chosen.get("caption"), ranking=ranking, scores=fusion.scores,
+            sum_scores=fusion.sum_scores, peak_scores=fusion.peak_scores, lam=fusion.lam, kappa=cfg.kappa,
+            deciding_expert=fusion.deciding_expert() if outcome.gate else None, gate=outcome.gate, hints=outcome.hints,
+            experts=outcome.experts, names={i: self._name(i) for i in sorted(mentioned)},
+            calls=calls, failures=session.failures, candidate_ids=list(candidates.ids),
+            instances_considered=candidates.considered, target=target, candidate_recall=candidates.recall,
+            latency_ms=(time.perf_counter() - started) * 1000.0,
+            tokens=sum(c.prompt_tokens + c.completion_tokens for c in calls),
+            cache_hits=sum(c.cached for c in calls))

@@ -1,0 +1,97 @@
+"""Top-down PNG of a map: each occupied cell coloured by the category of its topmost instance,
+room outlines with labels, multi-occupancy (stacked) cells hatched, and a category legend.
+matplotlib (Agg) is imported lazily."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import IesmError
+from .model import SceneMap
+
+MAX_LEGEND = 24  # categories beyond this (by cell count) are drawn as "other"
+
+
+def _top_instance_per_cell(scene: SceneMap) -> tuple[np.ndarray, np.ndarray]:
+    """(K,) occupied flat cells and (K,) id of the instance with the highest top in each."""
+    occ = scene.occupancy
+    cells, ids, top = occ.entries()
+    order = np.lexsort((ids, -np.nan_to_num(top, nan=-np.inf), cells))
+    first = np.ones(len(order), bool)
+    first[1:] = cells[order][1:] != cells[order][:-1]
+    return cells[order][first], ids[order][first]
+
+
+def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
+    """Write the top-down render of `scene` to `path` (PNG, written atomically)."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.patches import Patch
+    except ImportError as exc:
+        raise IesmError("rendering needs matplotlib: pip install 'iesm-agent[plots]'", None, "render") from exc
+    grid = scene.grid
+    if grid.height == 0 or grid.width == 0:
+        raise IesmError("the map has an empty grid (imported without a PLY?): nothing to render", scene.scene_id)
+    cells, top_ids = _top_instance_per_cell(scene)
+    label_of = {inst.id: inst.label for inst in scene.instances}
+    cell_labels = np.array([label_of[i] for i in top_ids.tolist()], dtype=object)
+    names, counts = np.unique(cell_labels, return_counts=True) if len(cells) else (np.array([]), np.array([]))
+    ranked = [str(n) for n in names[np.argsort(-counts, kind="stable")]]
+    shown = ranked[:MAX_LEGEND]
+    cmap = plt.get_cmap("tab20", 20)
+    colours = {name: (cmap(i % 20) if i < 20 else plt.get_cmap("Set3")(i - 20)) for i, name in enumerate(shown)}
+    other = (0.55, 0.55, 0.55, 1.0)
+    image = np.ones((grid.height * grid.width, 4))
+    if len(cells):
+        image[cells] = np.array([colours.get(lab, other) for lab in cell_labels])
+    image = image.reshape(grid.height, grid.width, 4)
+    extent = (grid.origin[0], grid.origin[0] + grid.width * grid.cell_size,
+              grid.origin[1], grid.origin[1] + grid.height * grid.cell_size)
+    aspect = grid.height / grid.width
+    fig, ax = plt.subplots(figsize=(10, max(4.0, 10 * aspect * 0.8)))
+    ax.imshow(image, origin="lower", extent=extent, interpolation="nearest")
+    xs = grid.origin[0] + (np.arange(grid.width) + 0.5) * grid.cell_size
+    ys = grid.origin[1] + (np.arange(grid.height) + 0.5) * grid.cell_size
+    counts_per_cell = np.zeros(grid.height * grid.width)
+    counts_per_cell[scene.occupancy.cells] = np.diff(scene.occupancy.indptr)
+    multi = (counts_per_cell > 1).reshape(grid.height, grid.width).astype(float)
+    if multi.any():
+        ax.contourf(xs, ys, multi, levels=[0.5, 1.5], colors="none", hatches=["xxxx"])
+        ax.contour(xs, ys, multi, levels=[0.5], colors="black", linewidths=0.4)
+    if scene.room_map is not None:
+        for room in scene.rooms:
+            mask = scene.room_map == room.id
+            if not mask.any():
+                continue
+            ax.contour(xs, ys, mask.astype(float), levels=[0.5], colors="dimgray", linewidths=1.2,
+                       linestyles="dashed")
+            r, c = np.argwhere(mask).mean(0)
+            ax.text(xs[int(round(c))], ys[int(round(r))], room.label, ha="center", va="center", fontsize=8,
+                    color="black", bbox={"facecolor": "white", "alpha": 0.7, "edgecolor": "none", "pad": 1})
+    handles = [Patch(facecolor=colours[n], label=n) for n in shown]
+    if len(ranked) > len(shown):
+        handles.append(Patch(facecolor=other, label=f"other ({len(ranked) - len(shown)})"))
+    handles.append(Patch(facecolor="white", edgecolor="black", hatch="xxxx", label="stacked cells"))
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(f"{scene.scene_id}: {len(scene.instances)} instances, "
+                 f"{scene.occupancy.multi_occupancy_cells} stacked cells")
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    finally:
+        plt.close(fig)

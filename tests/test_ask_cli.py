@@ -1,0 +1,53 @@
+"""`iesm ask` end to end in a subprocess: shipped map by name, offline model, JSON and human output."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+CLI = [sys.executable, "-c", "from iesm_agent.cli import main; main()"]
+
+
+def iesm(*args, env=None):
+    return subprocess.run(CLI + list(args), capture_output=True, text=True, timeout=120, env=env)
+
+
+@pytest.fixture(scope="module")
+def env(tmp_path_factory):
+    import os
+
+    return {**os.environ, "HF_HUB_OFFLINE": "1", "IESM_EMBEDDINGS": "0",
+            "IESM_CACHE_DIR": str(tmp_path_factory.mktemp("cache"))}
+
+
+def test_ask_json_on_the_shipped_map(apartment_store, env):
+    out = iesm("ask", "apartment", "take me to the refrigerator", "--json", env=env)
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    target = next(i.id for i in apartment_store.scene.instances if i.label == "refrigerator")
+    for key in ("instance_id", "label", "room", "ranking", "gate", "experts", "scores", "latency_ms", "failures"):
+        assert key in data
+    assert data["instance_id"] == target and (data["label"], data["room"]) == ("refrigerator", "kitchen")
+    assert set(data["gate"]) == {"obj", "room", "desc", "abs"}
+    assert abs(sum(data["gate"].values()) - 1) < 1e-9
+    assert str(target) in data["scores"] and data["ranking"][0] == target
+    assert data["failures"] == [] and len(data["calls"]) == 5
+
+
+def test_ask_human_output_with_explain_and_options(apartment_path, env):
+    out = iesm("ask", str(apartment_path), "the fridge", "--method", "experts:obj,room", "--kappa", "3",
+               "--explain", env=env)
+    assert out.returncode == 0, out.stderr
+    assert "refrigerator" in out.stdout and "gate:" in out.stdout
+    assert "obj expert:" in out.stdout and "deciding expert:" in out.stdout
+    assert "desc" not in out.stdout.split("gate:")[1].splitlines()[0]
+
+
+def test_ask_errors_are_one_line(env):
+    out = iesm("ask", "no-such-map", "a chair", env=env)
+    assert out.returncode == 2 and out.stderr.startswith("iesm: error: no-such-map")
+    out = iesm("ask", "apartment", "a chair", "--method", "magic", env=env)
+    assert out.returncode == 2 and "unknown retrieval method" in out.stderr
+    out = iesm("ask", "apartment", "a chair", "--kappa", "0", env=env)
+    assert out.returncode == 2 and "kappa" in out.stderr

@@ -1,0 +1,91 @@
+"""Suite parsing: every bad line is an error naming file and line; --skip-invalid keeps the rest."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from iesm_agent.errors import IesmError
+from iesm_agent.evals.suite import SuiteQuery, load_suites, write_suite
+from iesm_agent.store.fileformat import save_map
+from iesm_agent.store.model import GridSpec, Instance, SceneMap
+
+
+@pytest.fixture
+def tiny_map(tmp_path):
+    scene = SceneMap(scene_id="tiny", grid=GridSpec(cell_size=0.1, height=4, width=4),
+                     instances=[Instance(id=1, label="chair"), Instance(id=2, label="table")])
+    path = tmp_path / "maps" / "tiny.iesm"
+    path.parent.mkdir()
+    save_map(scene, path)
+    return path
+
+
+def _line(**fields):
+    base = {"id": "q1", "map": "maps/tiny.iesm", "query": "find the chair", "type": "o",
+            "target": 1, "accept": [1]}
+    base.update(fields)
+    return json.dumps(base)
+
+
+def _write(tmp_path, lines, name="suite.jsonl"):
+    path = tmp_path / name
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_valid_suite_resolves_map_relative_to_suite_file(tmp_path, tiny_map):
+    path = _write(tmp_path, [_line(), "", _line(id="q2", target=2, accept=[])])
+    suite = load_suites([path])
+    assert [e.query.id for e in suite.entries] == ["q1", "q2"]
+    assert suite.entries[1].line == 3
+    assert suite.entries[0].map_path == tiny_map.resolve()
+    assert suite.entries[1].query.accept == [2]  # the target is always accepted
+
+
+@pytest.mark.parametrize("bad, message", [
+    ("{\"id\": \"q9\", \"map\": ", "Expecting value|Unterminated|Expecting"),
+    (_line(id="q9", map="maps/nowhere.iesm"), "unknown map 'maps/nowhere.iesm'"),
+    (_line(id="q9", target=7, accept=[7]), "target 7 is not an instance"),
+    (_line(id="q9", accept=[1, 99]), "accept id 99 is not an instance"),
+    (json.dumps({"id": "q9", "map": "maps/tiny.iesm", "target": 1}), "query: Field required"),
+    (_line(id="q9", type="xyz"), "type: Input should be"),
+    (_line(), "duplicate query id 'q1'"),
+])
+def test_bad_line_names_file_and_line(tmp_path, tiny_map, bad, message):
+    path = _write(tmp_path, [_line(), bad, _line(id="q3")])
+    with pytest.raises(IesmError, match=message) as info:
+        load_suites([path])
+    assert info.value.source == str(path)
+    assert info.value.where == "line 2"
+    assert str(info.value).startswith(f"{path}:line 2: ")
+
+
+def test_skip_invalid_collects_errors_and_keeps_the_rest(tmp_path, tiny_map):
+    path = _write(tmp_path, [_line(), "not json", _line(id="q2", target=5, accept=[5]), _line(id="q3", target=2)])
+    suite = load_suites([path], skip_invalid=True)
+    assert [e.query.id for e in suite.entries] == ["q1", "q3"]
+    assert [e.where for e in suite.errors] == ["line 2", "line 3"]
+
+
+def test_ids_must_be_unique_across_suites(tmp_path, tiny_map):
+    first = _write(tmp_path, [_line()], "a.jsonl")
+    second = _write(tmp_path, [_line()], "b.jsonl")
+    with pytest.raises(IesmError, match="duplicate query id 'q1'") as info:
+        load_suites([first, second])
+    assert info.value.source == str(second)
+
+
+def test_unreadable_suite_names_the_file(tmp_path):
+    with pytest.raises(IesmError, match="cannot read suite") as info:
+        load_suites([tmp_path / "missing.jsonl"])
+    assert info.value.source.endswith("missing.jsonl")
+
+
+def test_write_suite_round_trips(tmp_path, tiny_map):
+    queries = [SuiteQuery(id="a", map="maps/tiny.iesm", query="find the table", type="o", target=2, accept=[2])]
+    path = tmp_path / "out.jsonl"
+    write_suite(queries, path)
+    assert [e.query for e in load_suites([path]).entries] == queries
+    assert list(tmp_path.glob(".out.jsonl.*")) == []  # no temporary file left behind
