@@ -44,10 +44,17 @@ def test_ask_human_output_with_explain_and_options(apartment_path, env):
     assert "desc" not in out.stdout.split("gate:")[1].splitlines()[0]
 
 
-def test_ask_errors_are_one_line(env):
-    out = iesm("ask", "no-such-map", "a chair", env=env)
-    assert out.returncode == 2 and out.stderr.startswith("iesm: error: no-such-map")
-    out = iesm("ask", "apartment", "a chair", "--method", "magic", env=env)
-    assert out.returncode == 2 and "unknown retrieval method" in out.stderr
-    out = iesm("ask", "apartment", "a chair", "--kappa", "0", env=env)
-    assert out.returncode == 2 and "kappa" in out.stderr
+@pytest.mark.parametrize("args, message", [
+    (["no-such-map", "a chair"], "iesm: error: no-such-map: no such map file"),
+    (["apartment", "a chair", "--method", "magic"], "unknown retrieval method 'magic'"),
+    (["apartment", "a chair", "--method", "experts:obj,colour"], "unknown expert(s) ['colour']"),
+    (["apartment", "a chair", "--kappa", "0"], "retrieval.kappa"),
+])
+def test_ask_errors_are_one_line(monkeypatch, capsys, args, message):
+    from iesm_agent.cli import main
+
+    monkeypatch.setattr(sys, "argv", ["iesm", "ask", *args])
+    with pytest.raises(SystemExit) as exit_info:
+        main()
+    err = capsys.readouterr().err
+    assert exit_info.value.code == 2 and message in err and err.count("\n") == 1

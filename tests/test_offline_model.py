@@ -167,9 +167,9 @@ def test_gate_argmax(model, lib, query, qtype, top, _ids, _obj, _room):
     best = max(scores.values())
     winners = {n for n, v in scores.items() if v == best}
     accepted = {top} if isinstance(top, str) else set(top)
-    assert winners & accepted and winners <= accepted | {"obj", "desc", "room"} - ({"abs"} if qtype == "ard" else set())
-    if qtype == "ard":
-        assert winners == {"abs"}
+    assert winners <= accepted
+    if qtype in ("o", "ard"):
+        assert winners == accepted
     if qtype in ("or", "ord", "ard") and _room:
         assert scores["room"] >= 2
     if qtype in ("od", "ord"):
@@ -189,8 +189,9 @@ def test_single_pass_ranking_finds_the_target(model, lib, query, qtype, _top, id
 @pytest.mark.parametrize("query,qtype,_top,ids,_obj,_room", TABLE, ids=[r[0] for r in TABLE])
 def test_the_experts_the_gate_favours_find_the_target(model, lib, query, qtype, _top, ids, _obj, _room):
     scores = gate_scores(model, lib, query)["scores"]
-    leader = max(sorted(scores), key=lambda n: scores[n])
-    assert set(expert_rank(model, lib, leader, query)) & ids
+    strong = [name for name, score in scores.items() if score >= 3]
+    found = set().union(*(expert_rank(model, lib, name, query) for name in strong))
+    assert found & ids
 
 
 @pytest.mark.parametrize("query,_qtype,_top,_ids,obj,room", TABLE, ids=[r[0] for r in TABLE])

@@ -243,3 +243,9 @@ def test_result_json_has_string_keys(store, experts_dir):
     script = Script(gate=gate(obj=1), obj=ranked(12), room=ranked(), desc=ranked(), abs=ranked())
     data = json.loads(make(store, experts_dir, script).ask("table").model_dump_json())
     assert data["instance_id"] == 12 and "12" in data["scores"] and data["experts"]["obj"] == [12]
+
+
+async def test_sync_ask_works_inside_a_running_loop(store, experts_dir):
+    script = Script(gate=gate(obj=1), obj=ranked(14), room=ranked(), desc=ranked(), abs=ranked())
+    retriever = make(store, experts_dir, script)
+    assert retriever.ask("the lamp").instance_id == (await retriever.aask("the lamp")).instance_id == 14

@@ -116,11 +116,12 @@ def _describe(t: Target, qtype: str, others: Sequence[Target], rng: random.Rando
     subsets = [[k] for k in kinds] + ([kinds] if len(kinds) > 1 else [])
     clashes = [sum(all(o.attributes.get(k) == t.attributes[k] for k in s) for o in scope) for s in subsets]
     best = min(clashes)
-    choice = rng.choice([s for s, c in zip(subsets, clashes) if c == best])
+    choice = rng.choice([s for s, c in zip(subsets, clashes, strict=True) if c == best])
     return {k: t.attributes[k] for k in choice}
 
 
 def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocabulary, rng: random.Random) -> str:
+    """A query of `qtype` for `t` from the templates (command verb, description form, room phrase)."""
     room = rng.choice(_ROOM_FORMS).format(room=t.room) if "r" in qtype else ""
     desc = _describe(t, qtype, others, rng) if "d" in qtype else {}
     adjectives = [vocab.adjective(k, v) for k, v in sorted(desc.items())]
@@ -142,8 +143,7 @@ def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocab
         else:
             np = " ".join([*adjectives, t.category])
         template = rng.choice(_VERBS)
-    text = template.format(np=f"{np} {room}".strip() if room else np)
-    return text.replace(" ?", "?")
+    return template.format(np=f"{np} {room}".strip() if room else np)
 
 
 def validate(text: str, t: Target, qtype: str, vocab: Vocabulary) -> Optional[str]:
@@ -184,6 +184,19 @@ async def _model_query(model: Model, library, t: Target, qtype: str, fallback: s
         rejected = text or problem
     result.fallbacks += 1
     return fallback
+
+
+async def _rewrite(model: Model, library, jobs: list[tuple[Target, str]], qtype: str, vocab: Vocabulary,
+                   seed: int, result: GenerationResult) -> list[tuple[Target, str]]:
+    """The model's query for each (target, template query) job, at most 8 calls at a time."""
+    sem = asyncio.Semaphore(8)
+
+    async def write(k: int, t: Target, fallback: str) -> str:
+        async with sem:
+            return await _model_query(model, library, t, qtype, fallback, vocab, seed * 1000 + k, result)
+
+    texts = await asyncio.gather(*(write(k, t, text) for k, (t, text) in enumerate(jobs)))
+    return [(t, text) for (t, _), text in zip(jobs, texts, strict=True)]
 
 
 def _map_ref(given: str, path: Path, out: Path) -> str:
@@ -229,14 +242,7 @@ async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[s
                 if validate(text, t, qtype, vocab) is None:
                     jobs.append((t, text))
             if model is not None:
-                sem = asyncio.Semaphore(8)
-
-                async def write(t: Target, text: str, k: int) -> str:
-                    async with sem:
-                        return await _model_query(model, library, t, qtype, text, vocab, seed * 1000 + k, result)
-
-                texts = await asyncio.gather(*(write(t, text, k) for k, (t, text) in enumerate(jobs)))
-                jobs = [(t, text) for (t, _), text in zip(jobs, texts)]
+                jobs = await _rewrite(model, library, jobs, qtype, vocab, seed, result)
             for k, (t, text) in enumerate(jobs):
                 result.queries.append(SuiteQuery(
                     id=f"{scene.scene_id}-{qtype}-{k:03d}", map=ref, query=text, type=qtype,

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import asyncio
 import hashlib
+import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -206,10 +207,16 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant) -> ResultRecord:
         candidate_recall=res.candidate_recall)
 
 
+def _shown(path: str) -> str:
+    """`path` relative to the working directory when it lies below it."""
+    rel = os.path.relpath(path)
+    return path if rel.startswith("..") else Path(rel).as_posix()
+
+
 def write_run_outputs(run_dir: str | Path, config: RunConfig, outcome: RunOutcome) -> dict:
     """Summary (with run facts and skipped suite lines), report and plot of a finished run."""
     summary = build_summary(outcome.records, [v.name for v in config.variants], {
-        "run": {"provider": config.provider, "suites": config.suites, "queries": len(outcome.suite.entries),
+        "run": {"provider": config.provider, "suites": [_shown(s) for s in config.suites], "queries": len(outcome.suite.entries),
                 "variants": [v.model_dump() for v in config.variants], "results": len(outcome.records),
                 "resumed_with": outcome.done_before, "new_results": outcome.new,
                 "wall_s": round(outcome.wall_s, 3),

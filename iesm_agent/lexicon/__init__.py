@@ -146,9 +146,13 @@ def _guess_lemma(token: str, vocab: frozenset[str]) -> str:
     for cand in candidates:
         if cand in vocab:
             return cand
-    if token in vocab:
+    if token in vocab or len(token) <= 3:
         return token
-    if token.endswith("s") and not token.endswith(("ss", "us", "is")) and len(token) > 3:
+    if token.endswith("ies"):
+        return token[:-3] + "y"
+    if token.endswith(("ches", "shes", "xes", "sses")):
+        return token[:-2]
+    if token.endswith("s") and not token.endswith(("ss", "us", "is")):
         return token[:-1]
     return token
 

@@ -262,14 +262,18 @@ class _Handler(BaseHTTPRequestHandler):
             body = raw.decode("utf-8", "replace")
         headers = {k.lower(): v for k, v in self.headers.items()}
         record = self.owner._begin(self.path, headers, body)
-        status = 0
         try:
-            status, headers, payload = self.owner._answer(record)
-            self._send(status, headers, payload)
+            status, reply_headers, payload = self.owner._answer(record)
+        except BaseException:
+            self.owner._end(record, 0)
+            raise
+        # counted out before replying: a client that sends its next request as soon as this
+        # reply arrives must not find this one still in flight
+        self.owner._end(record, status)
+        try:
+            self._send(status, reply_headers, payload)
         except (BrokenPipeError, ConnectionResetError):
-            status = 0  # the client gave up (e.g. its timeout fired during a slow fault)
-        finally:
-            self.owner._end(record, status)
+            record.status = 0  # the client gave up (e.g. its timeout fired during a slow fault)
 
     def _send(self, status: int, headers: dict[str, str], payload: bytes) -> None:
         self.send_response(status)

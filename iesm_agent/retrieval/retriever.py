@@ -101,6 +101,7 @@ class Retriever:
             return pool.submit(asyncio.run, self.aask(query, target=target)).result()
 
     async def aclose(self) -> None:
+        """Release the model's connections (also when the model was passed in)."""
         await self.model.aclose()
 
     def _name(self, instance_id: int) -> str:

@@ -85,6 +85,8 @@ def analyse_query(text: str) -> QueryInfo:
     for s in spans:
         covered.update(range(s.start, s.end))
     head = _head_span(spans, end)
+    if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
+        end, head = head.start, None  # "something (that) gives light": light is what it does
     info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
     afford: dict[str, float] = {}
 
@@ -98,6 +100,7 @@ def analyse_query(text: str) -> QueryInfo:
             continue
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
+            info.target_phrase = " ".join(surface[s.start:s.end])
             _add_entry(afford, lex.generic[info.generic], 1.0)
             continue
         if s.has("room") and not (in_target and s.has("cat")):
@@ -106,8 +109,8 @@ def analyse_query(text: str) -> QueryInfo:
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr:
-            info.attrs.extend(kv for kv in attr if kv not in info.attrs)
+        info.attrs.extend(kv for kv in attr if kv not in info.attrs)
+        if attr and not s.has("cue"):
             continue
         if s.has("cue"):
             scale = 1.0 if s.end - s.start > 1 else 0.8
@@ -139,6 +142,12 @@ def _head_span(spans: list[Span], end: int) -> Span | None:
         if cats and not s.has("gen"):
             head = s
     return head
+
+
+def _after_abstract_clause(lex: Lexicon, lemmas: list[str], covered: set[int], start: int) -> bool:
+    """An abstract noun comes before `start` with an unknown (verb-like) word in between."""
+    marks = [i for i in range(start) if lemmas[i] in lex.words["abstract"]]
+    return bool(marks) and any(i not in covered for i in range(marks[0] + 1, start))
 
 
 def _implied_rooms(lex: Lexicon, words: list[str], info: QueryInfo) -> None:

