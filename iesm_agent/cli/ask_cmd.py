@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import asyncio
 from pathlib import Path
-from typing import List, Optional
 
 import typer
 
@@ -31,11 +30,11 @@ def ask_command(
     method: str = typer.Option("mtefr", "--method", "-m", help="mtefr, spr, keyword or experts:obj,desc,..."),
     as_json: bool = typer.Option(False, "--json", help="Print the full result as JSON."),
     explain: bool = typer.Option(False, "--explain", help="Explain the decision (weights, rankings, scores)."),
-    base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+    base_url: str | None = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
     no_cache: bool = typer.Option(False, "--no-cache", help="Do not use the response cache (on by default except offline)."),
-    kappa: Optional[int] = typer.Option(None, "--kappa", help="Top-k per expert (paper: 2)."),
-    experts_dir: List[Path] = typer.Option([], "--experts-dir", help="Extra expert spec directory (repeatable)."),
-    prompts: Optional[Path] = typer.Option(None, "--prompts", help="Prompt directory overriding shipped templates."),
+    kappa: int | None = typer.Option(None, "--kappa", help="Top-k per expert (paper: 2)."),
+    experts_dir: list[Path] = typer.Option([], "--experts-dir", help="Extra expert spec directory (repeatable)."),
+    prompts: Path | None = typer.Option(None, "--prompts", help="Prompt directory overriding shipped templates."),
 ) -> None:
     """Retrieve the map instance QUERY refers to (MTEFR by default)."""
     from ..config import load_settings

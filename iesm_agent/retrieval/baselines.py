@@ -6,7 +6,8 @@ Both are expressed as a one-expert fusion, so their U scores are the rank scores
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 from ..config import RetrievalConfig
 from ..store.mapstore import CANDIDATE_FIELDS

@@ -7,11 +7,12 @@ a TOML file), then the user directories in the order given. Adding an expert nee
 
 from __future__ import annotations
 
-import tomllib
+from collections.abc import Iterable
 from importlib.metadata import entry_points
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
+import tomllib
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from ..errors import IesmError

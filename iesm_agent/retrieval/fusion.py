@@ -16,8 +16,8 @@ order is total. Scores are compared rounded to 12 decimals so that float noise n
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Mapping, Sequence
 
 
 @dataclass(frozen=True)

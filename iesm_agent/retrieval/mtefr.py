@@ -8,7 +8,7 @@ threshold are called, and they get the gate's hints. A single expert needs no ga
 from __future__ import annotations
 
 import asyncio
-from typing import Callable, Sequence
+from collections.abc import Callable, Sequence
 
 from ..config import RetrievalConfig
 from .calls import Outcome, Reply, Session

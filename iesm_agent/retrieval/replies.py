@@ -7,7 +7,8 @@ out of the text by `providers.jsonreply`, never evaluated.
 from __future__ import annotations
 
 import math
-from typing import Any, Collection, Sequence
+from collections.abc import Collection, Sequence
+from typing import Any
 
 from ..providers.jsonreply import parse_json_reply
 

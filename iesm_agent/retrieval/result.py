@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Optional
 
 from pydantic import BaseModel, Field
 
@@ -23,7 +22,7 @@ class CallTrace(BaseModel):
     prompt_tokens: int = 0
     completion_tokens: int = 0
     cached: bool = False
-    error: Optional[str] = None
+    error: str | None = None
 
 
 class RetrievalResult(BaseModel):
@@ -35,17 +34,17 @@ class RetrievalResult(BaseModel):
 
     query: str
     method: str
-    instance_id: Optional[int] = None
-    label: Optional[str] = None
-    room: Optional[str] = None
-    caption: Optional[str] = None
+    instance_id: int | None = None
+    label: str | None = None
+    room: str | None = None
+    caption: str | None = None
     ranking: list[int] = Field(default_factory=list)
     scores: dict[int, float] = Field(default_factory=dict)
     sum_scores: dict[int, float] = Field(default_factory=dict)
     peak_scores: dict[int, float] = Field(default_factory=dict)
-    lam: Optional[float] = None
-    kappa: Optional[int] = None
-    deciding_expert: Optional[str] = None
+    lam: float | None = None
+    kappa: int | None = None
+    deciding_expert: str | None = None
     gate: dict[str, float] = Field(default_factory=dict)
     hints: dict[str, str] = Field(default_factory=dict)
     experts: dict[str, list[int]] = Field(default_factory=dict)
@@ -54,8 +53,8 @@ class RetrievalResult(BaseModel):
     failures: list[str] = Field(default_factory=list)
     candidate_ids: list[int] = Field(default_factory=list)
     instances_considered: int = 0
-    target: Optional[int] = None
-    candidate_recall: Optional[bool] = None
+    target: int | None = None
+    candidate_recall: bool | None = None
     latency_ms: float = 0.0
     tokens: int = 0
     cache_hits: int = 0

@@ -12,6 +12,8 @@ in [0, 1]. When the map has embeddings from the model `embeddings.get_encoder()`
 
 from __future__ import annotations
 
+import importlib
+
 import re
 from pathlib import Path
 from typing import Any, Optional, Union
@@ -214,8 +216,8 @@ class MapStore:
         if self._encoder is _UNSET:
             self._encoder = None
             if self._emb is not None and self.scene.embedding_model:
-                try:
-                    from .. import embeddings
+                try:  # through sys.modules, so tests can substitute the encoder module
+                    embeddings = importlib.import_module("iesm_agent.embeddings")
                 except ImportError:
                     return None
                 declared = getattr(getattr(embeddings, "Encoder", None), "name", None)
