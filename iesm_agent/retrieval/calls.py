@@ -7,6 +7,7 @@ A call never raises on model misbehaviour: an exception from the provider become
 from __future__ import annotations
 
 import hashlib
+import time
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -61,13 +62,15 @@ class Session:
                           prompt_sha256=prompt_sha256(messages))
         options = ChatOptions(temperature=0.0,
                               json_schema=schema if self.model.capabilities.json_schema else None)
+        started = time.perf_counter()
         try:
             completion = await self.model.acomplete(messages, options)
         except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
             trace.error = f"{type(exc).__name__}: {exc}"[:500]
             return Reply(trace, None)
+        finally:
+            trace.latency_ms = (time.perf_counter() - started) * 1000.0
         trace.reply = completion.text[:REPLY_CHARS]
-        trace.latency_ms = completion.latency_ms
         trace.prompt_tokens = completion.usage.prompt_tokens
         trace.completion_tokens = completion.usage.completion_tokens
         trace.cached = completion.cached

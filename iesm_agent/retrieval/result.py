@@ -11,7 +11,8 @@ REPLY_CHARS = 2000
 
 class CallTrace(BaseModel):
     """One model call: which prompt (template hash, sha256 of the rendered messages), the raw
-    reply (truncated), cost, and the error if the call or its parsing failed."""
+    reply (truncated), cost (`latency_ms` = wall time of the call as awaited), and the error if
+    the call or its parsing failed."""
 
     name: str
     template: str
