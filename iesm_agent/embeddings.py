@@ -75,6 +75,8 @@ def _load() -> Encoder | None:
         return None
     os.environ["HF_HUB_OFFLINE"] = "1"
     os.environ["TRANSFORMERS_OFFLINE"] = "1"
+    os.environ.setdefault("HF_HUB_DISABLE_PROGRESS_BARS", "1")  # no "Loading weights" bars on stderr
+    os.environ.setdefault("TRANSFORMERS_VERBOSITY", "error")
     try:
         from importlib import resources
 

@@ -45,7 +45,7 @@ def test_ask_human_output_with_explain_and_options(apartment_path, env):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["no-such-map", "a chair"], "iesm: error: no-such-map: no such map file"),
+    (["no-such-map", "a chair"], "iesm: error: unknown map 'no-such-map': no file"),
     (["apartment", "a chair", "--method", "magic"], "unknown retrieval method 'magic'"),
     (["apartment", "a chair", "--method", "experts:obj,colour"], "unknown expert(s) ['colour']"),
     (["apartment", "a chair", "--kappa", "0"], "retrieval.kappa"),

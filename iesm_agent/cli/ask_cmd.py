@@ -9,22 +9,14 @@ import typer
 
 
 def open_store(map_ref: str):
-    """A MapStore from a `.iesm` path or the name of a shipped map (e.g. `apartment`)."""
-    from ..errors import IesmError
-    from ..resources import shipped_map
-    from ..store.mapstore import MapStore
+    """A MapStore from a `.iesm` file, an importable JSON file or a shipped map name."""
+    from ..store import MapStore, open_map
 
-    path = Path(map_ref)
-    if not path.exists():
-        try:
-            path = shipped_map(map_ref)
-        except FileNotFoundError:
-            raise IesmError("no such map file, and no shipped map of that name", map_ref) from None
-    return MapStore.load(path)
+    return MapStore(open_map(map_ref))
 
 
 def ask_command(
-    map_ref: str = typer.Argument(..., metavar="MAP", help="A .iesm file or a shipped map name (e.g. apartment)."),
+    map_ref: str = typer.Argument(..., metavar="MAP", help="A .iesm file, an importable JSON map, or a shipped map name (e.g. apartment)."),
     query: str = typer.Argument(..., help="The sentence naming the goal object."),
     provider: str = typer.Option("offline", "--provider", "-p", help="Model spec, e.g. offline, openai:gpt-4o-mini."),
     method: str = typer.Option("mtefr", "--method", "-m", help="mtefr, spr, keyword or experts:obj,desc,..."),

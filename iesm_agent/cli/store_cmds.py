@@ -18,8 +18,9 @@ def _check_output(out: Path) -> None:
 
 def map_info(path: Path) -> dict:
     """Summary of a `.iesm` file (what `iesm info --json` prints)."""
-    from ..store import MapStore
+    from ..store import MapStore, resolve_map_path
 
+    path = resolve_map_path(path)
     store = MapStore.load(path)
     scene = store.scene
     return {
@@ -73,7 +74,7 @@ def register(app: typer.Typer) -> None:
 
     @app.command("info")
     def info_cmd(
-        path: Path = typer.Argument(..., help="a .iesm map"),
+        path: Path = typer.Argument(..., help="a .iesm map or a shipped map name (e.g. apartment)"),
         as_json: bool = typer.Option(False, "--json", help="print JSON"),
     ) -> None:
         """Summarise a .iesm map: instances, rooms, categories, grid, size."""
@@ -101,13 +102,13 @@ def register(app: typer.Typer) -> None:
 
     @app.command("render")
     def render_cmd(
-        path: Path = typer.Argument(..., help="a .iesm map"),
+        path: Path = typer.Argument(..., help="a .iesm map or a shipped map name (e.g. apartment)"),
         output: Path = typer.Option(..., "-o", "--output", help="PNG to write"),
     ) -> None:
         """Draw a top-down PNG: categories, room outlines, stacked cells."""
-        from ..store import load_map
+        from ..store import load_map, resolve_map_path
         from ..store.render import render_map
 
         _check_output(output)
-        render_map(load_map(path), output)
+        render_map(load_map(resolve_map_path(path)), output)
         typer.echo(f"wrote {output}")

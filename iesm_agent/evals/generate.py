@@ -19,7 +19,8 @@ from typing import Optional, Sequence
 from ..errors import IesmError
 from ..providers.base import ChatOptions, Model
 from ..store.model import Instance, SceneMap
-from .suite import MapRegistry, SuiteQuery, resolve_map, write_suite
+from ..store.refs import resolve_map_path
+from .suite import MapRegistry, SuiteQuery, write_suite
 from .vocab import Vocabulary, normalise, room_name
 
 TYPES: tuple[str, ...] = ("o", "or", "od", "ord", "ard")
@@ -221,10 +222,7 @@ async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[s
         library = PromptLibrary()
     registry, result = MapRegistry(), GenerationResult()
     for given in maps:
-        try:
-            path = resolve_map(given, Path.cwd())
-        except FileNotFoundError as exc:
-            raise IesmError(str(exc), given) from exc
+        path = resolve_map_path(given)
         scene = registry.get(path)
         ref = _map_ref(given, path, out)
         keep = set(top_categories(scene))

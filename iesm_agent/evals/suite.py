@@ -1,6 +1,7 @@
 """Query suites: JSONL, one `SuiteQuery` per line, validated against the maps they name.
 
-`map` is a path relative to the suite file, an absolute path, or the name of a shipped map
+`map` is a path relative to the suite file or an absolute path (a `.iesm` map, or a JSON map the
+importers read, such as the paper's `scene_*_caption.json`), or the name of a shipped map
 (`apartment`). Errors name the suite file and line number.
 """
 
@@ -16,8 +17,8 @@ from typing import Iterable, Literal, Optional
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from ..errors import IesmError
-from ..resources import shipped_map
 from ..store.model import SceneMap
+from ..store.refs import open_map, resolve_map_path
 
 QueryType = Literal["o", "or", "od", "ord", "ard"]
 
@@ -41,19 +42,6 @@ class SuiteQuery(BaseModel):
         return self
 
 
-def resolve_map(ref: str, base_dir: Path) -> Path:
-    """The map file `ref` names: an existing path (relative to `base_dir`) or a shipped map name."""
-    path = Path(ref) if Path(ref).is_absolute() else base_dir / ref
-    if path.is_file():
-        return path.resolve()
-    if "/" not in ref and "\\" not in ref:
-        try:
-            return shipped_map(ref.removesuffix(".iesm"))
-        except FileNotFoundError:
-            pass
-    raise FileNotFoundError(f"unknown map {ref!r}: no file {path} and no shipped map of that name")
-
-
 class MapRegistry:
     """Loads each map file once (by resolved path)."""
 
@@ -62,9 +50,7 @@ class MapRegistry:
 
     def get(self, path: Path) -> SceneMap:
         if path not in self._maps:
-            from ..store.fileformat import load_map
-
-            self._maps[path] = load_map(path)
+            self._maps[path] = open_map(path)
         return self._maps[path]
 
 
@@ -87,9 +73,9 @@ class Suite:
 def _check(query: SuiteQuery, path: Path, registry: MapRegistry) -> Path:
     """Resolved map path of `query`; raises ValueError when its map or ids are unknown."""
     try:
-        map_path = resolve_map(query.map, path.parent)
-    except FileNotFoundError as exc:
-        raise ValueError(str(exc)) from exc
+        map_path = resolve_map_path(query.map, path.parent)
+    except IesmError as exc:
+        raise ValueError(exc.message) from exc
     ids = {inst.id for inst in registry.get(map_path).instances}
     unknown = [i for i in query.accept if i not in ids]
     if unknown:
