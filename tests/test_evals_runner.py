@@ -117,3 +117,24 @@ async def test_resume_with_another_configuration_is_refused(tmp_path, suite):
     await run_eval(_config(suite), run, model=FunctionModel(word_overlap))
     with pytest.raises(IesmError, match="different variants"):
         await run_eval(_config(suite, "spr"), run, model=FunctionModel(word_overlap), resume=True)
+
+
+async def test_experts_dir_adds_an_expert_to_every_variant(suite, tmp_path):
+    experts = tmp_path / "experts"
+    experts.mkdir()
+    (experts / "size.toml").write_text(
+        'name = "size"\ntitle = "Size expert"\ngate_description = "sizes: big, small, tall"\n'
+        'focus = "Size words"\nfields = ["id", "label"]\ntemplate = "expert.j2"\n')
+    gate_prompts = []
+
+    def model(messages, options):
+        text = "\n".join(m.text() for m in messages)
+        if '"scores"' in text and "<experts>" in text:
+            gate_prompts.append(text)
+            return json.dumps({"scores": {}, "hints": {}})
+        return word_overlap(messages, options)
+
+    config = make_config([suite], make_variants(["mtefr"], []), "scripted", experts_dirs=[experts])
+    assert config.experts_dirs == [str(experts.resolve())]
+    await run_eval(config, tmp_path / "run", model=FunctionModel(model))
+    assert gate_prompts and all('"size"' in p for p in gate_prompts)

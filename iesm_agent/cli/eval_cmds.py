@@ -28,6 +28,8 @@ def eval_command(
                                      help="Methods, comma separated: mtefr, spr, keyword, experts:obj,desc, ..."),
     provider: str = typer.Option("offline", "--provider", "-p", help="Model spec, e.g. offline, openai:gpt-4o-mini."),
     prompts: List[Path] = typer.Option([], "--prompts", help="Prompt directory; each one is a variant of every method."),
+    experts_dir: List[Path] = typer.Option([], "--experts-dir",
+                                           help="Extra expert spec directory (repeatable), for every variant."),
     out: Path = typer.Option(..., "--out", "-o", help="Run directory (results.jsonl, summary.json, report.md)."),
     concurrency: int = typer.Option(4, "--concurrency", "-j", help="Queries in flight at once."),
     resume: bool = typer.Option(False, "--resume", help="Continue the run in OUT, skipping finished queries."),
@@ -44,7 +46,8 @@ def eval_command(
     thresholds = parse_thresholds(fail_under)
     variants = make_variants(split_methods(method), prompts)
     cache = not no_cache and provider != "offline"
-    config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid)
+    config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
+                         experts_dirs=experts_dir)
 
     with _progress("eval") as progress:
         task = progress.add_task("eval", total=None)
@@ -90,6 +93,8 @@ def gen_queries_command(
     types: str = typer.Option("o,or,od,ord,ard", "--types", help="Query types, comma separated."),
     per_type: int = typer.Option(10, "--per-type", "-n", help="Queries per type and map."),
     seed: int = typer.Option(0, "--seed", help="Random seed (same seed, same suite)."),
+    experts_dir: List[Path] = typer.Option([], "--experts-dir",
+                                           help="Extra expert spec directory (repeatable), for every variant."),
     out: Path = typer.Option(..., "--out", "-o", help="Suite file to write (JSONL)."),
     provider: Optional[str] = typer.Option(None, "--provider", "-p",
                                            help="Let this model write the queries (prompts/gen_queries.j2); "

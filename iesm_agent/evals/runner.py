@@ -47,6 +47,7 @@ class RunConfig(BaseModel):
     base_url: Optional[str] = None
     cache: bool = False
     skip_invalid: bool = False
+    experts_dirs: list[str] = []
 
 
 def split_methods(specs: list[str]) -> list[str]:
@@ -81,7 +82,8 @@ def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Var
 
 
 def make_config(suite_paths: list[str | Path], variants: list[Variant], provider: str, *,
-                base_url: str | None = None, cache: bool = False, skip_invalid: bool = False) -> RunConfig:
+                base_url: str | None = None, cache: bool = False, skip_invalid: bool = False,
+                experts_dirs: list[str | Path] = ()) -> RunConfig:
     paths = [Path(p).resolve() for p in suite_paths]
     digest = hashlib.sha256()
     for path in paths:
@@ -90,7 +92,8 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
         except OSError as exc:
             raise IesmError(f"cannot read suite: {exc}", path) from exc
     return RunConfig(suites=[str(p) for p in paths], suites_sha256=digest.hexdigest(), variants=variants,
-                     provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid)
+                     provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
+                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs])
 
 
 def prepare_run_dir(run_dir: Path, config: RunConfig, resume: bool) -> None:
@@ -165,7 +168,7 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     model = model or _build_model(config)
     stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
     retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
-                                            cache=False)
+                                            experts_dirs=config.experts_dirs, cache=False)
                   for path, store in stores.items() for v in config.variants}
     new: list[ResultRecord] = []
     started = time.perf_counter()
