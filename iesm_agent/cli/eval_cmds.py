@@ -93,8 +93,6 @@ def gen_queries_command(
     types: str = typer.Option("o,or,od,ord,ard", "--types", help="Query types, comma separated."),
     per_type: int = typer.Option(10, "--per-type", "-n", help="Queries per type and map."),
     seed: int = typer.Option(0, "--seed", help="Random seed (same seed, same suite)."),
-    experts_dir: List[Path] = typer.Option([], "--experts-dir",
-                                           help="Extra expert spec directory (repeatable), for every variant."),
     out: Path = typer.Option(..., "--out", "-o", help="Suite file to write (JSONL)."),
     provider: Optional[str] = typer.Option(None, "--provider", "-p",
                                            help="Let this model write the queries (prompts/gen_queries.j2); "

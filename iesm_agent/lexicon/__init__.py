@@ -52,6 +52,7 @@ class Lexicon:
     commands: tuple[tuple[str, ...], ...]
     lemmas: dict[str, str]
     vocab: frozenset[str]
+    cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
 
     # -- tokens -----------------------------------------------------------------------------
@@ -67,8 +68,16 @@ class Lexicon:
         return result
 
     def tokens(self, text: str) -> list[str]:
-        """Lowercase word tokens of `text` (hyphenated words kept whole), not lemmatised."""
-        return _TOKEN.findall(text.lower().replace("\u2019", "'"))
+        """Lowercase word tokens of `text`, not lemmatised. A hyphenated word the lexicon knows
+        ("off-white", "l-shaped") stays whole; an unknown compound ("honey-colored", "blue-gray",
+        "x-shaped") is split into its parts so each part can be read."""
+        out: list[str] = []
+        for tok in _TOKEN.findall(text.lower().replace("\u2019", "'")):
+            if "-" in tok and tok not in self.vocab and tok not in self.lemmas:
+                out.extend(t for t in tok.split("-") if t)
+            else:
+                out.append(tok)
+        return out
 
     # -- phrases ----------------------------------------------------------------------------
     def scan(self, lemmas: list[str]) -> list[Span]:
@@ -94,6 +103,24 @@ class Lexicon:
             else:
                 i += 1
         return spans
+
+    def gapped_cues(self, lemmas: list[str], max_gap: int = 2) -> list[tuple[tuple[int, ...], str]]:
+        """Multi-word affordance cues whose words occur in order with up to `max_gap` other words
+        between consecutive ones ("keep the morning sun out" ~ "keep sun out"):
+        (positions of the cue's words, cue index); contiguous matches excluded (`scan` finds those)."""
+        found: list[tuple[tuple[int, ...], str]] = []
+        for i, first in enumerate(lemmas):
+            for cue, index in self.cue_sequences.get(first, ()):
+                positions = [i]
+                for word in cue[1:]:
+                    pos = positions[-1]
+                    nxt = next((j for j in range(pos + 1, min(len(lemmas), pos + 2 + max_gap)) if lemmas[j] == word), None)
+                    if nxt is None:
+                        break
+                    positions.append(nxt)
+                if len(positions) == len(cue) and positions[-1] - i + 1 > len(cue):
+                    found.append((tuple(positions), index))
+        return found
 
     def phrase(self, text: str) -> tuple[tuple[str, str], ...]:
         """(kind, value) pairs of `text` if the whole text is one lexicon phrase."""
@@ -220,7 +247,8 @@ def load_lexicon() -> Lexicon:
         room_related={**{(a, b): s for a, b, s in rooms["related"]}, **{(b, a): s for a, b, s in rooms["related"]}},
         shades=frozenset(attrs["shades"]),
         words={name: frozenset(lang[name]) for name in
-               ("skip", "boundaries", "abstract", "collective", "collective_strict", "weak_heads", "ignore")}
+               ("skip", "boundaries", "abstract", "collective", "collective_strict", "weak_heads", "ignore",
+                "color_suffixes", "imitation_suffixes")}
         | {"room_modifiers": frozenset(rooms["modifiers"])},
         commands=(),
         lemmas=lemmas, vocab=vocab,
@@ -232,6 +260,13 @@ def load_lexicon() -> Lexicon:
             phrases[key].append((kind, value))
     lex.phrases = {k: tuple(v) for k, v in phrases.items()}
     lex.max_len = max(len(k) for k in phrases)
+    seqs: dict[str, list[tuple[tuple[str, ...], str]]] = {}
+    for key, kinds in lex.phrases.items():
+        if len(key) > 1:
+            for kind, value in kinds:
+                if kind == "cue":
+                    seqs.setdefault(key[0], []).append((key, value))
+    lex.cue_sequences = {k: tuple(v) for k, v in seqs.items()}
     lex.commands = tuple(sorted({tuple(tok(c)) for c in lang["commands"]}, key=len, reverse=True))
     return lex
 

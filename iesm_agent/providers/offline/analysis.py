@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -13,6 +14,18 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase ("... to put my cup on")
 _THEME_WEIGHT = 0.35
 _SECONDARY_WEIGHT = 0.6
+
+
+@dataclass(frozen=True)
+class Slot:
+    """One described attribute as written: `surface` keeps the words ("pale blue gray",
+    "leather like", "mesh"), `base` drops shade words ("blue gray"), `values` are the canonical
+    families ({"blue", "gray"}; empty for a colour the lexicon does not know, e.g. "ash colored")."""
+
+    kind: str
+    surface: str
+    base: str
+    values: frozenset[str]
 
 
 @dataclass
@@ -30,6 +43,8 @@ class QueryInfo:
     afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
     abstract: bool = False                                    # "something", "a place to ..."
     head_words: frozenset[str] = frozenset()                  # lemmas of the target phrase
+    slots: tuple[Slot, ...] = ()                              # attributes as written (surface + family)
+    overlap: frozenset[str] = frozenset()                     # stems of extra and attribute words
     memo: dict = field(default_factory=dict, repr=False, compare=False)  # scorer's per-query cache
 
     @property
@@ -48,6 +63,8 @@ class Record:
     words: frozenset[str]        # lemmas of label, caption and tags
     label_words: frozenset[str]  # lemmas of label and alt labels
     text: str                    # label and caption, for sentence embeddings
+    slots: tuple[Slot, ...] = ()  # attributes as written in label, caption and tags
+    stems: frozenset[str] = frozenset()  # word stems of label, caption and tags
 
 
 def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
@@ -89,6 +106,11 @@ def analyse_query(text: str) -> QueryInfo:
         end, head = head.start, None  # "something (that) gives light": light is what it does
     info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
     afford: dict[str, float] = {}
+    attr_spans: list[Span] = []
+    cue_covered: set[int] = set()
+    for s in spans:
+        if s.has("cue"):
+            cue_covered.update(range(s.start, s.end))
 
     for s in spans:
         in_target = s.end <= end
@@ -110,6 +132,8 @@ def analyse_query(text: str) -> QueryInfo:
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
+        if attr:
+            attr_spans.append(s)
         if attr and not s.has("cue"):
             continue
         if s.has("cue"):
@@ -123,13 +147,85 @@ def analyse_query(text: str) -> QueryInfo:
         elif s.has("gen"):
             _add_entry(afford, lex.generic[s.values("gen")[0]], 0.8)
 
+    for positions, idx in lex.gapped_cues(lemmas):
+        if not cue_covered.intersection(positions):  # a contiguous cue already read these words
+            _add_entry(afford, lex.affordances[int(idx)], 0.8)
+            covered.update(positions)
     if afford:
         top = max(afford.values())
         info.afford = {c: w / top for c, w in afford.items()}
-    stop = skip | bounds | lex.words["abstract"]
+    slots, used = _slots(lex, lemmas, attr_spans)
+    info.slots = tuple(dict.fromkeys(slots))
+    stop = skip | bounds | lex.words["abstract"] | lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
     info.extra = frozenset(t for i, t in enumerate(lemmas)
-                           if i not in covered and len(t) > 2 and t not in stop and not t.isdigit())
+                           if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
+    words = set(info.extra)
+    for slot in info.slots:
+        words.update(slot.base.split())
+    info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
     return info
+
+
+def stem(word: str) -> str:
+    """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
+    w = word
+    if len(w) > 5 and w.endswith("ing"):
+        w = w[:-3]
+    elif len(w) > 4 and w.endswith(("ed", "es")):
+        w = w[:-2]
+    elif len(w) > 3 and w.endswith("s") and not w.endswith("ss"):
+        w = w[:-1]
+    if len(w) > 4 and w.endswith("y"):
+        w = w[:-1]
+    if len(w) > 3 and w.endswith("e"):
+        w = w[:-1]
+    if len(w) > 3 and w[-1] == w[-2]:
+        w = w[:-1]
+    return w
+
+
+def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
+    """(surface, base) of an attribute's words: hyphens and colour suffixes dropped, imitation
+    words ("look", "faux", "like") folded into one trailing "like", shades dropped from base."""
+    parts = [p for w in words for p in w.split("-") if p]
+    imitation = any(p in lex.words["imitation_suffixes"] for p in parts)
+    core = [p for p in parts if p not in lex.words["imitation_suffixes"] and p not in lex.words["color_suffixes"]]
+    base = [p for p in core if p not in lex.shades] or core
+    tail = ["like"] if imitation else []
+    return " ".join(core + tail), " ".join(base + tail)
+
+
+def _slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[list[Slot], set[int]]:
+    """Attribute slots from attribute spans over one run of adjacent words: adjacent colour spans
+    form one compound colour ("golden brown", "blue gray"); an unknown word before a colour suffix
+    is a colour ("ash-colored"); a suffix after a span joins it ("leather look")."""
+    slots: list[Slot] = []
+    used: set[int] = set()
+    suffixes = lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
+    groups: list[list[Span]] = []
+    for s in attr_spans:
+        if groups and s.start == groups[-1][-1].end and s.has("color") and groups[-1][-1].has("color"):
+            groups[-1].append(s)
+        else:
+            groups.append([s])
+    span_idx = {i for s in attr_spans for i in range(s.start, s.end)}
+    for group in groups:
+        start, end = group[0].start, group[-1].end
+        while end < len(lemmas) and lemmas[end] in suffixes:
+            end += 1
+        used.update(range(start, end))
+        kinds = {k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}
+        for kind in sorted(kinds):
+            values = frozenset(v for s in group for k, v in s.kinds if k == kind)
+            words = lemmas[start:end] if kind == "color" or len(group) == 1 else lemmas[group[0].start:group[0].end]
+            surface, base = _norm_surface(lex, words)
+            slots.append(Slot(kind, surface, base, values))
+    for i in range(len(lemmas) - 1):
+        if (lemmas[i + 1] in lex.words["color_suffixes"] and i not in span_idx and i not in used
+                and lemmas[i].isalpha() and len(lemmas[i]) > 2 and lemmas[i] not in lex.shades):
+            slots.append(Slot("color", lemmas[i], lemmas[i], frozenset()))
+            used.update((i, i + 1))
+    return slots, used
 
 
 def _head_span(spans: list[Span], end: int) -> Span | None:
@@ -225,6 +321,26 @@ def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[s
     return frozenset(attrs), frozenset(words)
 
 
+_CHUNK = re.compile(r"[,;:.()/|!?]+")
+
+
+@lru_cache(maxsize=65536)
+def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
+    """Attribute slots and word stems of a caption, tag value or label. Punctuation separates
+    ("white, red" is two colours); words next to each other may form a compound ("blue-gray")."""
+    lex = load_lexicon()
+    slots: list[Slot] = []
+    stems: set[str] = set()
+    for chunk in _CHUNK.split(text):
+        lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
+        if not lemmas:
+            continue
+        stems.update(stem(w) for w in lemmas if len(w) > 2)
+        spans = [sp for sp in lex.scan(lemmas) if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds)]
+        slots.extend(_slots(lex, lemmas, spans)[0])
+    return tuple(dict.fromkeys(slots)), frozenset(stems)
+
+
 @lru_cache(maxsize=4096)
 def room_of(text: str) -> str | None:
     """Canonical room type of a room label such as 'Living Room 2' or 'office1'."""
@@ -272,13 +388,19 @@ def _record(data: dict) -> Record:
         text_parts += [_as_text(v) for v in tags.values()]
     attrs: set[tuple[str, str]] = set()
     words: set[str] = set()
+    slots: dict[Slot, None] = {}
+    stems: set[str] = set()
     for part in text_parts:
         if part:
             a, w = _caption_profile(part)
             attrs |= a
             words |= w
-    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), room=room, attrs=frozenset(attrs), words=frozenset(words),
-                  label_words=frozenset(label_words), text=". ".join(p for p in (label, caption) if p))
+            sl, st = text_slots(part)
+            slots.update(dict.fromkeys(sl))
+            stems |= st
+    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), room=room,
+                  attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
+                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems))
 
 
 def _as_text(value) -> str:
