@@ -1,7 +1,8 @@
 """`make demo`: the toolkit end to end on the shipped apartment, with the offline model.
 
-Each step runs the real `iesm` command (printed first, so it can be copied) and writes
-into `out/demo/` (override with IESM_DEMO_DIR).
+Each step runs the real `iesm` command line (printed first, so it can be copied) in this
+process, so the embedding model loads once, and writes into `out/demo/` (override with
+IESM_DEMO_DIR).
 """
 
 from __future__ import annotations
@@ -9,7 +10,6 @@ from __future__ import annotations
 import os
 import shlex
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
@@ -25,11 +25,13 @@ DEMO_QUERIES = [
 
 
 def _run(args: list[str]) -> int:
+    from .cli import run
+
     print(f"\n$ iesm {shlex.join(args)}", flush=True)
-    proc = subprocess.run([sys.executable, "-m", "iesm_agent.cli", *args])
-    if proc.returncode != 0:
-        print(f"(exit status {proc.returncode})", flush=True)
-    return proc.returncode
+    status = run(args)
+    if status != 0:
+        print(f"(exit status {status})", flush=True)
+    return status
 
 
 def main() -> int:

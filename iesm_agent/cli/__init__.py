@@ -54,24 +54,31 @@ def _register_commands() -> None:
 _register_commands()
 
 
-def main() -> None:
-    """Console entry point: user errors become one line on stderr and exit status 2."""
+def run(argv: list[str] | None = None) -> int:
+    """Run one `iesm` command line in this process and return its exit status: user errors
+    become one line on stderr and status 2."""
     try:
-        app(standalone_mode=False)
+        app(args=argv, standalone_mode=False)
     except IesmError as exc:
         print(f"iesm: error: {exc}", file=sys.stderr)
-        sys.exit(2)
+        return 2
     except KeyboardInterrupt:
         print("iesm: interrupted", file=sys.stderr)
-        sys.exit(130)
+        return 130
     except typer.Exit as exc:
-        sys.exit(exc.exit_code)
+        return exc.exit_code
     except Exception as exc:  # click usage errors and aborts
         import click
 
         if isinstance(exc, click.exceptions.ClickException):
             exc.show()
-            sys.exit(2)
+            return 2
         if isinstance(exc, click.exceptions.Abort):
-            sys.exit(130)
+            return 130
         raise
+    return 0
+
+
+def main() -> None:
+    """Console entry point (`iesm`)."""
+    sys.exit(run())

@@ -49,12 +49,14 @@ def ask_command(
     if as_json:
         print(result.model_dump_json(indent=2))
     else:
-        _print_human(result)
-    if explain:
+        _print_human(result, explain)
+    if as_json and explain:
         print(result.explain())
 
 
-def _print_human(result) -> None:
+def _print_human(result, explain: bool) -> None:
+    """The chosen instance, then either the short evidence (gate, experts' picks) or, with
+    `explain`, the full explanation (scores and the deciding expert too)."""
     from rich.console import Console
     from rich.markup import escape
 
@@ -66,15 +68,17 @@ def _print_human(result) -> None:
                       f" in {escape(result.room or 'no room')}")
         if result.caption:
             console.print(f"  {escape(result.caption)}")
-    if result.gate:
+    if explain:
+        console.print(escape(result.explain()))
+    elif result.gate:
         weights = "  ".join(f"{escape(e)} {w:.2f}" for e, w in sorted(result.gate.items(), key=lambda kv: -kv[1]))
         console.print(f"gate: {weights}")
-    for expert, ids in result.experts.items():
+    for expert, ids in ({} if explain else result.experts).items():
         picks = ", ".join(f"#{i} {escape(result.names.get(i, '?'))}" for i in ids) or "(nothing)"
         console.print(f"  {escape(expert)}: {picks}")
     console.print(f"[dim]{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached[/]")
     errors = Console(stderr=True, highlight=False)
-    for failure in result.failures:
+    for failure in ([] if explain else result.failures):  # the explanation lists them
         errors.print(f"[yellow]warning:[/] {escape(failure)}")
 
 

@@ -14,6 +14,8 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase ("... to put my cup on")
 _THEME_WEIGHT = 0.35
 _SECONDARY_WEIGHT = 0.6
+#: weight of a category only an alternative label names (the first; each later one 0.05 less)
+_ALT_WEIGHT = 0.6
 
 
 @dataclass(frozen=True)
@@ -61,7 +63,7 @@ class Record:
     room: str | None
     attrs: frozenset[tuple[str, str]]
     words: frozenset[str]        # lemmas of label, caption and tags
-    label_words: frozenset[str]  # lemmas of label and alt labels
+    label_words: frozenset[str]  # lemmas of the label
     text: str                    # label and caption, for sentence embeddings
     slots: tuple[Slot, ...] = ()  # attributes as written in label, caption and tags
     stems: frozenset[str] = frozenset()  # word stems of label, caption and tags
@@ -101,7 +103,7 @@ def analyse_query(text: str) -> QueryInfo:
     covered: set[int] = set()
     for s in spans:
         covered.update(range(s.start, s.end))
-    head = _head_span(spans, end)
+    head = _head_span(spans, end, lemmas, lex.words["abstract"])
     if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
         end, head = head.start, None  # "something (that) gives light": light is what it does
     info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
@@ -166,6 +168,19 @@ def analyse_query(text: str) -> QueryInfo:
     return info
 
 
+def _word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
+    """Stems of words and of the parts of hyphenated words; imitation words read as "like"."""
+    out: set[str] = set()
+    imitation = lex.words["imitation_suffixes"]
+    for w in lemmas:
+        for part in (w, *w.split("-")) if "-" in w else (w,):
+            if part in imitation:
+                part = "like"
+            if len(part) > 2:
+                out.add(stem(part))
+    return out
+
+
 def stem(word: str) -> str:
     """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
     w = word
@@ -228,14 +243,18 @@ def _slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[lis
     return slots, used
 
 
-def _head_span(spans: list[Span], end: int) -> Span | None:
-    """Rightmost specific category span inside the target phrase."""
+def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
+    """Rightmost specific category span inside the target phrase. A word that is also an
+    attribute and stands before an abstract noun modifies it ("the glass object": glass is the
+    material, not a drinking glass)."""
     head = None
     for s in spans:
         if s.end > end:
             break
         cats = [c for c in s.values("cat") if c not in _UNSPECIFIC]
-        if cats and not s.has("gen"):
+        modifier = (any(k in ATTRIBUTE_KINDS for k, _ in s.kinds) and s.end < len(lemmas)
+                    and lemmas[s.end] in abstract)
+        if cats and not s.has("gen") and not modifier:
             head = s
     return head
 
@@ -335,7 +354,7 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
         if not lemmas:
             continue
-        stems.update(stem(w) for w in lemmas if len(w) > 2)
+        stems.update(_word_stems(lex, lemmas))
         spans = [sp for sp in lex.scan(lemmas) if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds)]
         slots.extend(_slots(lex, lemmas, spans)[0])
     return tuple(dict.fromkeys(slots)), frozenset(stems)
@@ -376,10 +395,10 @@ def _record(data: dict) -> Record:
     concepts = dict(label_concepts(label)) if label else {}
     label_words = set(_caption_profile(label)[1]) if label else set()
     alts = data.get("alt_labels")
-    for alt in alts if isinstance(alts, list) else []:
+    # alternative labels are the mapper's runner-up guesses: weak evidence, best first
+    for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
         for c, w in label_concepts(_as_text(alt)):
-            concepts.setdefault(c, 0.9 * w)
-        label_words |= _caption_profile(_as_text(alt))[1]
+            concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
     room = room_of(_as_text(data.get("room"))) if data.get("room") else None
     caption = _as_text(data.get("caption"))
     text_parts = [label, caption]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...lexicon import load_lexicon
-from .analysis import QueryInfo, Record, analyse_query, candidate_from_line
+from .analysis import QueryInfo, Record, Slot, analyse_query, candidate_from_line, stem
 from .prompt import Prompt, focus_role
 
 #: component weights per expert role: label, room, description, affordance, text overlap, embedding
@@ -74,37 +74,99 @@ def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
 
 
 # -- ranking ---------------------------------------------------------------------------------
+#: index of each component in a candidate's row
+_LABEL, _ROOM, _DESC, _AFFORD, _TEXT, _EMB = range(6)
+#: a candidate is "of the asked-for kind" when its category (or function) fit reaches this share
+#: of the best fit among the candidates (1.0 exact, 0.9 more specific kind: all in; 0.6 parent: out)
+_TIER_SHARE = 0.75
+#: within the asked-for kind, how much the graded fit still counts for experts whose focus is
+#: something else (a side table is as much "a table" as a table is)
+_INNER_GATE_WEIGHT = {"room": 0.25, "desc": 0.25, "abs": 0.5, "all": 0.5}
+#: every component counts this much on top of the focus weights, so that ties left by the focus
+#: evidence are broken by the rest of the evidence before the id decides
+_TIE_BREAK = 0.02
+
+
 def rank(prompt: Prompt, encoder=None) -> dict:
     q = analyse_query(prompt.query)
-    parsed = [p for p in map(candidate_from_line, prompt.candidate_lines) if p is not None]
-    if not parsed:
+    ids, records, comp = _candidate_matrix(q, prompt.candidate_lines)
+    if not len(ids):
         return {"ranked_instance_ids": []}
-    ids = np.array([i for i, _ in parsed], dtype=np.int64)
-    records = [r for _, r in parsed]
-    weights = _WEIGHTS[focus_role(prompt.focus) if prompt.focus else "all"].copy()
-    lex = load_lexicon()
-    comp = np.array([_components(lex, q, r) for r in records], dtype=np.float64)
+    role = focus_role(prompt.focus) if prompt.focus else "all"
+    weights = _WEIGHTS[role].copy()
     lexical = bool(q.targets or q.afford)
     if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
-        weights[4], weights[5] = max(weights[4], 0.5), max(weights[5], 1.0)
-    if encoder is not None and weights[5] > 0.25:
-        comp[:, 5] = _embedding_scores(encoder, q.text, records)
-    scores = comp @ weights
+        weights[_TEXT], weights[_EMB] = max(weights[_TEXT], 0.5), max(weights[_EMB], 1.0)
+    if encoder is not None and weights[_EMB] > 0.25:
+        comp = comp.copy()
+        comp[:, _EMB] = _embedding_scores(encoder, q.text, records)
+    tier, gate_col = _tiers(q, comp)
+    if gate_col is not None and role != "obj":
+        weights[gate_col] = min(weights[gate_col], _INNER_GATE_WEIGHT[role])
+    scores = comp @ (weights + _TIE_BREAK) + tier * 10.0
+    relevant = (comp @ weights) > 1e-9
     order = np.lexsort((ids, -scores))
     ranked: list[int] = []
     for i in order:
-        if scores[i] <= 1e-9 or len(ranked) >= prompt.kappa:
+        if len(ranked) >= prompt.kappa:
             break
-        if int(ids[i]) not in ranked:
+        if relevant[i] and int(ids[i]) not in ranked:
             ranked.append(int(ids[i]))
     return {"ranked_instance_ids": ranked}
+
+
+def _tiers(q: QueryInfo, comp: np.ndarray) -> tuple[np.ndarray, int | None]:
+    """Category gating. When the query names a category, candidates of that kind rank above
+    partial matches, which rank above everything else, in every expert; with no category but a
+    function ("something to sit on"), the same holds for the objects that serve it."""
+    if q.named:
+        col = _LABEL
+    elif q.afford:
+        col = _AFFORD
+    else:
+        return np.zeros(len(comp)), None
+    fit = comp[:, col]
+    best = float(fit.max())
+    if best < 0.3:
+        return np.zeros(len(comp)), None
+    return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0)), col
+
+
+def _candidate_matrix(q: QueryInfo, lines: list[str]) -> tuple[np.ndarray, list[Record], np.ndarray]:
+    """(ids, records, components) for the candidate lines; memoised per query on the whole block
+    (the same block comes with each expert prompt) and per line (lines repeat across queries)."""
+    key = ("block", "\n".join(lines))
+    hit = q.memo.get(key)
+    if hit is not None:
+        return hit
+    lex = load_lexicon()
+    ids: list[int] = []
+    records: list[Record] = []
+    rows: list[tuple[float, ...]] = []
+    seen: set[int] = set()
+    for line in lines:
+        parsed = candidate_from_line(line)
+        if parsed is None:
+            continue
+        ident, record = parsed
+        if ident in seen:
+            continue
+        seen.add(ident)
+        ids.append(ident)
+        records.append(record)
+        rows.append(_components(lex, q, record))
+    out = (np.array(ids, dtype=np.int64), records,
+           np.array(rows, dtype=np.float64).reshape(len(rows), 6))
+    if len(q.memo) < 4096:
+        q.memo[key] = out
+    return out
 
 
 def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
     """label, room, description, affordance, text overlap (embedding filled in later).
 
-    Memoised per query on the record's parts (concept tuples, room strings and attribute
-    frozensets are distinct key types), so repeated values are scored once per query."""
+    Memoised per query on the record's parts (concept tuples, room strings and slot tuples
+    are distinct key types), so repeated values are scored once per query."""
     memo = q.memo
     cat = memo.get(r.concepts)
     if cat is None:
@@ -115,15 +177,34 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
     room = memo.get(r.room)
     if room is None:
         room = memo[r.room] = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items()
-                                if r.room is not None), default=0.0)
-    desc = memo.get(r.attrs)
-    if desc is None:
-        desc = 0.0
-        for kind, value in q.attrs:
-            desc += max((lex.attr_sim(kind, value, v) for k, v in r.attrs if k == kind), default=0.0)
-        desc = memo[r.attrs] = desc / len(q.attrs) if q.attrs else 0.0
-    text = len(q.extra & r.words) / len(q.extra) if q.extra else 0.0
+                                   if r.room is not None), default=0.0)
+    desc = 0.0
+    if q.slots:
+        desc = sum(_slot_match(lex, s, r) for s in q.slots) / len(q.slots)
+    text = len(q.overlap & r.stems) / len(q.overlap) if q.overlap else 0.0
     return label, room, desc, afford, text, 0.0
+
+
+def _slot_match(lex, slot: Slot, r: Record) -> float:
+    """Best match of one query attribute against a candidate: the same words 1.0, the same words
+    up to shade 0.9, the words in its caption 0.85, the same family 0.7-0.8, a related family 0.4."""
+    best = 0.0
+    for other in r.slots:
+        if other.kind != slot.kind:
+            continue
+        if other.surface == slot.surface:
+            return 1.0
+        if other.base == slot.base:
+            best = max(best, 0.9)
+        elif slot.values & other.values:
+            best = max(best, 0.7 + 0.1 * len(slot.values & other.values) / len(slot.values | other.values))
+        elif best < 0.4 and any(lex.attr_sim(slot.kind, a, b) > 0 for a in slot.values for b in other.values):
+            best = 0.4
+    if best < 0.85 and slot.base:
+        words = [stem(w) for w in slot.base.split() if w != "like"]
+        if words and all(w in r.stems for w in words):
+            best = 0.85
+    return best
 
 
 def _concept_scores(lex, q: QueryInfo, concepts: tuple[tuple[str, float], ...]) -> tuple[float, float]:
