@@ -39,9 +39,10 @@ def test_ask_human_output_with_explain_and_options(apartment_path, env):
     out = iesm("ask", str(apartment_path), "the fridge", "--method", "experts:obj,room", "--kappa", "3",
                "--explain", env=env)
     assert out.returncode == 0, out.stderr
-    assert "refrigerator" in out.stdout and "gate:" in out.stdout
+    assert "refrigerator" in out.stdout and "gate weights:" in out.stdout
     assert "obj expert:" in out.stdout and "deciding expert:" in out.stdout
-    assert "desc" not in out.stdout.split("gate:")[1].splitlines()[0]
+    assert "desc" not in out.stdout.split("gate weights:")[1].splitlines()[0]
+    assert out.stdout.count("obj expert:") == 1  # the explanation is not repeated
 
 
 @pytest.mark.parametrize("args, message", [

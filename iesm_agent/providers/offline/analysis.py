@@ -97,7 +97,8 @@ def analyse_query(text: str) -> QueryInfo:
     info = QueryInfo(text=text)
 
     # the target noun phrase ends at the first boundary word (relative clause, landmark, room)
-    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0), len(lemmas))
+    inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
+    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
     if lemmas and lemmas[0] in bounds:
         end = 0
     covered: set[int] = set()
@@ -120,6 +121,11 @@ def analyse_query(text: str) -> QueryInfo:
             info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
+            # a modifier inside the category phrase is also a description ("mesh chair": mesh)
+            for k in range(s.start, s.end) if s.end - s.start > 1 else ():
+                kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
+                if kinds:
+                    attr_spans.append(Span(k, k + 1, kinds))
             _implied_rooms(lex, lemmas[s.start:s.end], info)
             continue
         if s.has("gen") and in_target:

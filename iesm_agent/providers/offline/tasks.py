@@ -165,58 +165,79 @@ def _candidate_matrix(q: QueryInfo, lines: list[str]) -> tuple[np.ndarray, list[
 def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
     """label, room, description, affordance, text overlap (embedding filled in later).
 
-    Memoised per query on the record's parts (concept tuples, room strings and slot tuples
-    are distinct key types), so repeated values are scored once per query."""
+    Memoised per query on the parts candidates share (single concepts, rooms, attribute slots),
+    so a value that recurs across candidates is scored once per query."""
     memo = q.memo
-    cat = memo.get(r.concepts)
-    if cat is None:
-        cat = memo[r.concepts] = _concept_scores(lex, q, r.concepts)
-    label, afford = cat
+    label = afford = 0.0
+    for cc, wc in r.concepts:
+        key = ("c", cc)
+        sims = memo.get(key)
+        if sims is None:
+            sims = memo[key] = _concept_fit(lex, q, cc)
+        label = max(label, wc * sims[0])
+        afford = max(afford, wc * sims[1])
     if label and q.head_words:  # the label literally says (part of) what the query says
         label += 0.05 * len(q.head_words & r.label_words) / len(q.head_words)
-    room = memo.get(r.room)
+    key = ("r", r.room)
+    room = memo.get(key)
     if room is None:
-        room = memo[r.room] = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items()
-                                   if r.room is not None), default=0.0)
+        room = memo[key] = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items()
+                                if r.room is not None), default=0.0)
     desc = 0.0
     if q.slots:
-        desc = sum(_slot_match(lex, s, r) for s in q.slots) / len(q.slots)
+        desc = sum(_slot_match(lex, q, i, r) for i in range(len(q.slots))) / len(q.slots)
     text = len(q.overlap & r.stems) / len(q.overlap) if q.overlap else 0.0
     return label, room, desc, afford, text, 0.0
 
 
-def _slot_match(lex, slot: Slot, r: Record) -> float:
-    """Best match of one query attribute against a candidate: the same words 1.0, the same words
-    up to shade 0.9, the words in its caption 0.85, the same family 0.7-0.8, a related family 0.4."""
+def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
+    """Best match of the query's `index`-th attribute against a candidate: the same words 1.0,
+    the same words up to shade 0.9, its words in the candidate's text 0.85, the same family
+    0.7-0.8, a related family 0.4."""
+    memo = q.memo
     best = 0.0
     for other in r.slots:
-        if other.kind != slot.kind:
-            continue
-        if other.surface == slot.surface:
-            return 1.0
-        if other.base == slot.base:
-            best = max(best, 0.9)
-        elif slot.values & other.values:
-            best = max(best, 0.7 + 0.1 * len(slot.values & other.values) / len(slot.values | other.values))
-        elif best < 0.4 and any(lex.attr_sim(slot.kind, a, b) > 0 for a in slot.values for b in other.values):
-            best = 0.4
-    if best < 0.85 and slot.base:
-        words = [stem(w) for w in slot.base.split() if w != "like"]
-        if words and all(w in r.stems for w in words):
+        key = ("s", index, other)
+        sim = memo.get(key)
+        if sim is None:
+            sim = memo[key] = _slot_sim(lex, q.slots[index], other)
+        if sim > best:
+            best = sim
+            if best >= 1.0:
+                return 1.0
+    if best < 0.85:
+        key = ("w", index)
+        words = memo.get(key)
+        if words is None:
+            words = memo[key] = frozenset(stem(w) for w in q.slots[index].base.split() if w != "like")
+        if words and words <= r.stems:
             best = 0.85
     return best
 
 
-def _concept_scores(lex, q: QueryInfo, concepts: tuple[tuple[str, float], ...]) -> tuple[float, float]:
-    label = afford = 0.0
-    for cc, wc in concepts:
-        for qc, wq in q.targets.items():
-            label = max(label, wq * wc * lex.concept_sim(qc, cc))
-        if q.afford:
-            best = q.afford.get(cc, 0.0)
-            for parent in lex.ancestors.get(cc, ()):
-                best = max(best, 0.8 * q.afford.get(parent, 0.0))
-            afford = max(afford, wc * best)
+def _slot_sim(lex, slot: Slot, other: Slot) -> float:
+    if other.kind != slot.kind:
+        return 0.0
+    if other.surface == slot.surface:
+        return 1.0
+    if other.base == slot.base:
+        return 0.9
+    shared = slot.values & other.values
+    if shared:
+        return 0.7 + 0.1 * len(shared) / len(slot.values | other.values)
+    if any(lex.attr_sim(slot.kind, a, b) > 0 for a in slot.values for b in other.values):
+        return 0.4
+    return 0.0
+
+
+def _concept_fit(lex, q: QueryInfo, cc: str) -> tuple[float, float]:
+    """(category fit, function fit) of one candidate category for the query."""
+    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in q.targets.items()), default=0.0)
+    afford = 0.0
+    if q.afford:
+        afford = q.afford.get(cc, 0.0)
+        for parent in lex.ancestors.get(cc, ()):
+            afford = max(afford, 0.8 * q.afford.get(parent, 0.0))
     return label, afford
 
 
