@@ -27,6 +27,16 @@ def field_path(loc: tuple[Any, ...]) -> str:
     return out
 
 
+def read_json(path: Path) -> Any:
+    """The parsed JSON of `path`; unreadable or invalid files are a `MapFormatError` naming it."""
+    try:
+        return json.loads(path.read_bytes())
+    except OSError as exc:
+        raise MapFormatError(f"cannot read: {exc.strerror or exc}", path) from exc
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise MapFormatError(f"invalid JSON: {exc}", path) from exc
+
+
 def detect_format(path: str | Path) -> str:
     """'objects' for a JSON object with an `objects` list, 'iesm' for a dictionary of instance
     entries with `category` and `caption`; anything else is a `MapFormatError`."""
@@ -34,12 +44,7 @@ def detect_format(path: str | Path) -> str:
     if path.suffix.lower() == ".ply":
         raise MapFormatError("a PLY file is imported together with its caption JSON: "
                              "pass the scene_*_caption.json (and --ply for this file)", path)
-    try:
-        data = json.loads(path.read_bytes())
-    except OSError as exc:
-        raise MapFormatError(f"cannot read: {exc.strerror or exc}", path) from exc
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise MapFormatError(f"invalid JSON: {exc}", path) from exc
+    data = read_json(path)
     if isinstance(data, dict):
         if "objects" in data:
             return "objects"

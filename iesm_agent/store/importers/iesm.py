@@ -26,7 +26,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ...errors import MapFormatError
 from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
-from . import field_path
+from . import field_path, read_json
 
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "<i2", "int16": "<i2",
               "ushort": "<u2", "uint16": "<u2", "int": "<i4", "int32": "<i4", "uint": "<u4",
@@ -133,12 +133,7 @@ def _find_ply(caption_path: Path) -> Optional[Path]:
 
 
 def _load_entries(path: Path) -> dict[int, _Entry]:
-    try:
-        data = json.loads(path.read_bytes())
-    except OSError as exc:
-        raise MapFormatError(f"cannot read: {exc.strerror or exc}", path) from exc
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise MapFormatError(f"invalid JSON: {exc}", path) from exc
+    data = read_json(path)
     if not isinstance(data, dict):
         raise MapFormatError("expected a JSON object of instance id -> entry", path)
     entries = {}

@@ -9,7 +9,6 @@ Missing captions are built from the known attributes (see `build_caption`).
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Annotated, Optional, Union
 
@@ -19,7 +18,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ...errors import MapFormatError
 from ..colors import color_name
 from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
-from . import field_path
+from . import field_path, read_json
 
 MARGIN = 0.25  # m of free space around the union of boxes
 PositiveVec3 = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
@@ -185,12 +184,7 @@ def _resolve_rooms(spec: ObjectList, path: Path) -> tuple[list[Room], list[Optio
 def import_objects(path: str | Path, cell_size: float = 0.05) -> SceneMap:
     """Build a `SceneMap` from an object-list JSON file (see module docstring)."""
     path = Path(path)
-    try:
-        data = json.loads(path.read_bytes())
-    except OSError as exc:
-        raise MapFormatError(f"cannot read: {exc.strerror or exc}", path) from exc
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise MapFormatError(f"invalid JSON: {exc}", path) from exc
+    data = read_json(path)
     try:
         spec = ObjectList.model_validate(data)
     except ValidationError as exc:
