@@ -3,8 +3,9 @@
 A template defines `{% block system %}` and `{% block user %}`; each block becomes one
 message (an empty block is left out). Templates are looked up by file name in the user
 directories first, then in the shipped `prompts/`, so a user folder overrides any
-template by name. Data is fenced with the `fence` filter (JSON, with <, >, & escaped),
-so untrusted captions cannot close a fence or inject instructions as markup.
+template by name. Data is fenced with the `fence` filter (JSON, with <, >, & escaped;
+`fence_lines` gives one such line per item), so untrusted captions cannot close a fence or
+inject instructions as markup.
 """
 
 from __future__ import annotations
@@ -28,6 +29,13 @@ def fence(value: Any) -> str:
             .replace(">", "\\u003e").replace("'", "\\u0027"))
 
 
+def fence_lines(values: Iterable[Any]) -> str:
+    """One `fence`d line per value (e.g. the candidate list inside `<candidates>`)."""
+    if isinstance(values, FencedList):
+        return values.fenced_lines
+    return "\n".join(map(fence, values))
+
+
 class Fenced(dict):
     """A dict that carries its `fence` text, computed once: for data rendered into many prompts
     (candidate views). Do not mutate it after construction."""
@@ -35,6 +43,15 @@ class Fenced(dict):
     def __init__(self, data: dict):
         super().__init__(data)
         self.fenced = fence(data)
+
+
+class FencedList(list):
+    """A list of `Fenced` items carrying its `fence_lines` text, computed once (the candidate
+    block shared by the expert prompts of one query). Do not mutate it after construction."""
+
+    def __init__(self, items: Iterable[Fenced]):
+        super().__init__(items)
+        self.fenced_lines = "\n".join(item.fenced for item in self)
 
 
 class PromptLibrary:
@@ -56,6 +73,7 @@ class PromptLibrary:
             autoescape=False,
         )
         self._env.filters["fence"] = fence
+        self._env.filters["fence_lines"] = fence_lines
 
     def source_hash(self, name: str) -> str:
         """sha256 (hex, 12 chars) of the template source that `name` resolves to."""

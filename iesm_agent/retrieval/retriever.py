@@ -15,7 +15,7 @@ from typing import Any
 
 from ..config import RetrievalConfig
 from ..errors import IesmError
-from ..prompting import Fenced, PromptLibrary
+from ..prompting import Fenced, FencedList, PromptLibrary
 from ..providers import Model, get_model
 from .baselines import run_keyword, run_spr
 from .calls import Outcome, Session
@@ -66,14 +66,19 @@ class Retriever:
         self._template_hashes: dict[str, str] = {}
 
     def _candidate_views(self, ids: Sequence[int]):
-        def views(fields: Sequence[str]) -> list[dict]:
-            cache = self._views.setdefault(tuple(fields), {})
-            out = []
-            for i in ids:
-                if i not in cache:
-                    cache[i] = Fenced(self.store.candidate_view(i, list(fields)))
-                out.append(cache[i])
-            return out
+        """views(fields) -> the candidates' views with those fields, built once per field set
+        for this query (experts sharing fields share one rendered candidate block)."""
+        built: dict[tuple[str, ...], FencedList] = {}
+
+        def views(fields: Sequence[str]) -> FencedList:
+            key = tuple(fields)
+            if key not in built:
+                cache = self._views.setdefault(key, {})
+                for i in ids:
+                    if i not in cache:
+                        cache[i] = Fenced(self.store.candidate_view(i, list(fields)))
+                built[key] = FencedList(cache[i] for i in ids)
+            return built[key]
         return views
 
     async def aask(self, query: str, *, target: int | None = None) -> RetrievalResult:
