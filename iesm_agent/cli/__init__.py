@@ -58,7 +58,7 @@ def run(argv: list[str] | None = None) -> int:
     """Run one `iesm` command line in this process and return its exit status: user errors
     become one line on stderr and status 2."""
     try:
-        app(args=argv, standalone_mode=False)
+        status = app(args=argv, standalone_mode=False)  # a command's typer.Exit code, or None
     except IesmError as exc:
         print(f"iesm: error: {exc}", file=sys.stderr)
         return 2
@@ -76,7 +76,7 @@ def run(argv: list[str] | None = None) -> int:
         if isinstance(exc, click.exceptions.Abort):
             return 130
         raise
-    return 0
+    return status if isinstance(status, int) else 0
 
 
 def main() -> None:

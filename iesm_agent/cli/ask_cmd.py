@@ -52,6 +52,8 @@ def ask_command(
         _print_human(result, explain)
     if as_json and explain:
         print(result.explain())
+    if result.instance_id is None:
+        raise typer.Exit(1)  # nothing retrieved (the output says why)
 
 
 def _print_human(result, explain: bool) -> None:
@@ -77,9 +79,13 @@ def _print_human(result, explain: bool) -> None:
         picks = ", ".join(f"#{i} {escape(result.names.get(i, '?'))}" for i in ids) or "(nothing)"
         console.print(f"  {escape(expert)}: {picks}")
     console.print(f"[dim]{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached[/]")
-    errors = Console(stderr=True, highlight=False)
-    for failure in ([] if explain else result.failures):  # the explanation lists them
-        errors.print(f"[yellow]warning:[/] {escape(failure)}")
+    errors = Console(stderr=True, highlight=False, soft_wrap=True)
+    if result.calls and all(c.error for c in result.calls):
+        errors.print(f"[red]error:[/] all {len(result.calls)} model calls failed; the first: "
+                     f"{escape(result.calls[0].error or '')}")
+    else:
+        for failure in ([] if explain else result.failures):  # the explanation lists them
+            errors.print(f"[yellow]warning:[/] {escape(failure)}")
 
 
 def register(app: typer.Typer) -> None:
