@@ -249,3 +249,24 @@ async def test_sync_ask_works_inside_a_running_loop(store, experts_dir):
     script = Script(gate=gate(obj=1), obj=ranked(14), room=ranked(), desc=ranked(), abs=ranked())
     retriever = make(store, experts_dir, script)
     assert retriever.ask("the lamp").instance_id == (await retriever.aask("the lamp")).instance_id == 14
+
+
+def test_candidate_pick_keeps_what_the_query_implies_by_function():
+    """On a map larger than G, the lexical search alone would fill C with instances sharing the
+    query's words; the concept fit keeps the keyboard ("something I can type on") in C."""
+    from iesm_agent.retrieval.candidates import select_candidates
+    from iesm_agent.store import MapStore
+    from iesm_agent.store.model import GridSpec, Instance, SceneMap
+
+    fillers = [Instance(id=i, label="chair", caption="something you can sit on, of any type")
+               for i in range(1, 131)]
+    keyboard = Instance(id=500, label="keyboard", caption="white plastic keys")
+    store = MapStore(SceneMap(scene_id="big", grid=GridSpec(cell_size=0.05, height=1, width=1),
+                              instances=[*fillers, keyboard]))
+    lexical_top = [i for i, _ in store.search("something I can type on", 100)]
+    assert 500 not in lexical_top  # what the pick has to overcome
+    picked = select_candidates(store, "something I can type on", 100, target=500)
+    assert picked.recall is True and picked.ids[0] == 500 and len(picked.ids) == 100
+    assert picked.considered == 131
+    plain = select_candidates(store, "a chair", 100, target=500)
+    assert plain.recall is False and len(plain.ids) == 100

@@ -1,10 +1,27 @@
 """Candidate set C (paper Sec. 3.4.2): every instance when the map holds at most G of them,
-else the top G of the store's own search (lexical + embeddings) for the query."""
+else the top G for the query.
+
+The pick combines the store's own search (lexical + embeddings) with the lexicon's reading of
+the query: the categories it names (through synonyms and raw-label head nouns) and the ones its
+functional phrases imply ("something I can type on" -> keyboard, laptop). Instances whose label
+denotes such a category come first, so a target the query never spells out still reaches the
+experts.
+"""
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
+
+import numpy as np
+
+from ..lexicon import load_lexicon
+from ..providers.offline.analysis import analyse_query, label_concepts
+
+#: alternative labels (the mapper's runner-up categories) count this much
+_ALT_WEIGHT = 0.5
 
 
 @dataclass(frozen=True)
@@ -17,12 +34,63 @@ class Candidates:
     recall: bool | None = None
 
 
+@lru_cache(maxsize=65536)
+def _denoted(label: str, alt_labels: tuple[str, ...]) -> tuple[tuple[str, float], ...]:
+    """Categories an instance's label (weight 1) and alternative labels denote."""
+    out = list(label_concepts(label))
+    out += [(c, _ALT_WEIGHT * w) for alt in alt_labels for c, w in label_concepts(alt)]
+    return tuple(out)
+
+
+def _wanted(query: str) -> dict[str, float]:
+    """Categories the query names (weight 1) or implies by function (affordance weight)."""
+    info = analyse_query(query)
+    wanted = dict(info.afford)
+    for concept, weight in info.targets.items():
+        wanted[concept] = max(wanted.get(concept, 0.0), weight)
+    return wanted
+
+
+def concept_fit(query: str, label: str, alt_labels: tuple[str, ...] = ()) -> float:
+    """0..1: how well an instance labelled `label` (with `alt_labels`) is a category the query
+    names or implies by function."""
+    return _fit(_wanted(query), _denoted(label, tuple(alt_labels)))
+
+
+def _fit(wanted: dict[str, float], denoted: tuple[tuple[str, float], ...]) -> float:
+    lex = load_lexicon()
+    return max((wq * wl * lex.concept_sim(qc, lc) for qc, wq in wanted.items() for lc, wl in denoted),
+               default=0.0)
+
+
+class _LabelIndex:
+    """A store's instances grouped by (label, alternative labels): `ids` (N,), `group` (N,)
+    index into `keys`, so a query's concept fit is computed once per distinct label."""
+
+    def __init__(self, instances: Any):
+        self.ids = np.array([inst.id for inst in instances], np.int64)
+        position: dict[tuple[str, tuple[str, ...]], int] = {}
+        self.group = np.array([position.setdefault((inst.label, tuple(inst.alt_labels)), len(position))
+                               for inst in instances], np.int64)
+        self.keys = list(position)
+
+
+_INDEXES: "weakref.WeakKeyDictionary[Any, _LabelIndex]" = weakref.WeakKeyDictionary()
+
+
 def select_candidates(store: Any, query: str, max_candidates: int, target: int | None = None) -> Candidates:
-    """Pick at most `max_candidates` instance ids of `store` for `query`."""
+    """Pick at most `max_candidates` instance ids of `store` for `query`: by concept fit first,
+    then by the store's search score, then by id."""
     instances = store.scene.instances
     if len(instances) <= max_candidates:
         ids = tuple(inst.id for inst in instances)
     else:
-        ids = tuple(dict.fromkeys(int(i) for i, _ in store.search(query, max_candidates)))[:max_candidates]
+        index = _INDEXES.get(store)
+        if index is None:
+            index = _INDEXES[store] = _LabelIndex(instances)
+        wanted = _wanted(query)
+        group_fit = np.array([_fit(wanted, _denoted(*key)) if wanted else 0.0 for key in index.keys])
+        order = np.lexsort((index.ids, -store.search_scores(query), -group_fit[index.group]))
+        ids = tuple(int(i) for i in index.ids[order[:max_candidates]])
     return Candidates(ids=ids, considered=len(instances),
                       recall=None if target is None else target in ids)

@@ -406,12 +406,17 @@ class MapStore:
             text: the query
             limit: maximum number of (instance id, score) pairs returned
         """
+        scores = self.search_scores(text)
+        rows = self._ranked(scores, self._ids, limit)
+        return [(int(self._ids[r]), float(scores[r])) for r in rows]
+
+    def search_scores(self, text: str) -> np.ndarray:
+        """(N,) float: the `search` score of every instance, in `scene.instances` order."""
         scores = self._lexical(text)
         sem = self._semantic(text)
         if sem is not None:
             scores = scores + _EMBED_WEIGHT * np.maximum(sem, 0.0)
-        rows = self._ranked(scores, self._ids, limit)
-        return [(int(self._ids[r]), float(scores[r])) for r in rows]
+        return scores
 
     def candidate_view(self, instance_id: int, fields: tuple[str, ...] | list[str] = CANDIDATE_FIELDS) -> dict:
         """The fields of one instance an expert may see (`id` always included)."""
