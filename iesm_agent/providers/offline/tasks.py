@@ -12,8 +12,8 @@ from .prompt import Prompt, focus_role
 _WEIGHTS = {
     "obj":  np.array([1.0, 0.1, 0.1, 0.3, 0.2, 0.2]),
     "room": np.array([0.6, 1.0, 0.1, 0.3, 0.2, 0.1]),
-    "desc": np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.2]),
-    "abs":  np.array([0.4, 0.3, 0.3, 1.0, 0.2, 0.3]),
+    "desc": np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3]),
+    "abs":  np.array([0.4, 0.3, 0.3, 1.0, 0.2, 0.2]),
     "all":  np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3]),
 }
 _KNOWN_ROLES = {"obj": "obj", "object": "obj", "room": "room", "desc": "desc", "description": "desc",
