@@ -75,7 +75,7 @@ def _print_table(summary: dict) -> None:
     from ..evals.metrics import TYPE_TITLES
 
     table = Table(title="O-SR (%) by query type")
-    table.add_column("variant")
+    table.add_column("variant", no_wrap=True)
     for t in summary["types"]:
         table.add_column(TYPE_TITLES[t], justify="right")
     for column in ("overall", "MRR", "top-3"):
@@ -85,7 +85,7 @@ def _print_table(summary: dict) -> None:
         table.add_row(name, *[f"{100 * m['by_type'][t]['osr']:.1f}" if t in m["by_type"] else "-"
                               for t in summary["types"]],
                       f"{100 * o['osr']:.1f}", f"{o['mrr']:.3f}", f"{100 * o['top3']:.1f}")
-    Console().print(table)
+    Console(width=None if sys.stdout.isatty() else 160).print(table)  # no truncated columns in logs
 
 
 def gen_queries_command(
