@@ -31,3 +31,19 @@ def iesm_maps_dir() -> Path:
     if not (IESM_MAPS / "scene_00829_caption.json").is_file():
         pytest.skip("../shared/data/iesm_maps not available")
     return IESM_MAPS
+
+
+@pytest.fixture(scope="session")
+def lib():
+    """The shipped prompt templates."""
+    from iesm_agent.prompting import PromptLibrary
+
+    return PromptLibrary()
+
+
+@pytest.fixture(scope="session")
+def model():
+    """The offline model on lexicons alone (deterministic, no embedding model to load)."""
+    from iesm_agent.providers.offline import OfflineModel
+
+    return OfflineModel(use_embeddings=False)

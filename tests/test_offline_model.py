@@ -8,9 +8,7 @@ import tomllib
 
 import pytest
 
-from iesm_agent.prompting import PromptLibrary
 from iesm_agent.providers.base import Message
-from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.resources import resource_dir
 
 EXPERTS = {s["name"]: s for s in (tomllib.loads(p.read_text())
@@ -128,14 +126,6 @@ TABLE = [
 ]
 
 
-@pytest.fixture(scope="module")
-def lib():
-    return PromptLibrary()
-
-
-@pytest.fixture(scope="module")
-def model():
-    return OfflineModel(use_embeddings=False)
 
 
 def ask(model, messages):

@@ -7,8 +7,6 @@ import tomllib
 
 import pytest
 
-from iesm_agent.prompting import PromptLibrary
-from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.providers.offline.analysis import analyse_query, text_slots
 from iesm_agent.resources import resource_dir
 
@@ -73,14 +71,6 @@ CANDS = [
 ROLES = ("obj", "room", "desc", "abs")
 
 
-@pytest.fixture(scope="module")
-def lib():
-    return PromptLibrary()
-
-
-@pytest.fixture(scope="module")
-def model():
-    return OfflineModel(use_embeddings=False)
 
 
 def expert(model, lib, name, query, kappa=2):
