@@ -41,20 +41,20 @@ async def test_same_seed_same_file_other_seed_other_file(tmp_path, suite):
     assert other.read_bytes() != path.read_bytes()
 
 
-def test_suite_is_valid_and_counts_per_type(suite, apartment_store):
+def test_suite_is_valid_and_counts_per_type(suite, apartment_store, vocab):
     path, result = suite
     entries = load_suites([path]).entries
     assert [sum(e.query.type == t for e in entries) for t in TYPES] == [8] * 5
     assert dict(result.counts) == {("apartment", t): 8 for t in TYPES}
-    top = set(top_categories(apartment_store.scene))
-    assert all(normalise(apartment_store.scene.instance(e.query.target).label) in top for e in entries)
+    top = set(top_categories(apartment_store.scene, vocab))
+    assert all(vocab.spoken(apartment_store.scene.instance(e.query.target).label) in top for e in entries)
 
 
-def test_accept_sets_follow_the_relaxations(suite, apartment_store):
+def test_accept_sets_follow_the_relaxations(suite, apartment_store, vocab):
     instances = apartment_store.scene.instances
     for q in _queries(suite[0]):
         target = apartment_store.scene.instance(q["target"])
-        same = [i for i in instances if normalise(i.label) == normalise(target.label)]
+        same = [i for i in instances if vocab.spoken(i.label) == vocab.spoken(target.label)]
         if q["type"] == "o":
             expected = [i.id for i in same]
         elif q["type"] == "or":
@@ -133,3 +133,12 @@ async def test_model_written_queries_are_validated_retried_and_fall_back(tmp_pat
         assert vocab.names_category(q["query"], target.label, tuple(target.alt_labels)) is None
     retries = [p for p in prompts if "previous request was rejected" in p]
     assert len(retries) == 2 * 3 and all("Never use these words" in p for p in retries)
+
+
+@pytest.mark.parametrize("label, spoken", [
+    ("window /outside", "window"), ("cabinet kitchen", "kitchen cabinet"), ("Sofa", "sofa"),
+    ("bed for pet", "bed for pet"), ("x/y", "x"),
+])
+def test_queries_name_raw_labels_as_people_do(vocab, label, spoken):
+    assert vocab.spoken(label) == spoken
+    assert vocab.names_category(f"take me to the {spoken}", label)

@@ -80,15 +80,16 @@ class GenerationResult:
         return lines
 
 
-def top_categories(scene: SceneMap, k: int = TOP_CATEGORIES) -> list[str]:
-    """The `k` most frequent normalised labels, structural/unhelpful ones left out (ties by name)."""
-    counts = Counter(normalise(i.label) for i in scene.instances)
+def top_categories(scene: SceneMap, vocab: Vocabulary, k: int = TOP_CATEGORIES) -> list[str]:
+    """The `k` most frequent categories (labels as people say them, `Vocabulary.spoken`),
+    structural/unhelpful ones left out (ties by name)."""
+    counts = Counter(vocab.spoken(i.label) for i in scene.instances)
     ranked = sorted((c for c in counts if c and c not in STRUCTURAL), key=lambda c: (-counts[c], c))
     return ranked[:k]
 
 
 def _target(inst: Instance, vocab: Vocabulary) -> Target:
-    return Target(inst=inst, category=normalise(inst.label), room=room_name(inst.room_label),
+    return Target(inst=inst, category=vocab.spoken(inst.label), room=room_name(inst.room_label),
                   attributes=vocab.attributes(inst.tags, inst.caption), uses=vocab.uses_of(inst.label))
 
 
@@ -225,7 +226,7 @@ async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[s
         path = resolve_map_path(given)
         scene = registry.get(path)
         ref = _map_ref(given, path, out)
-        keep = set(top_categories(scene))
+        keep = set(top_categories(scene, vocab))
         targets = [_target(i, vocab) for i in sorted(scene.instances, key=lambda i: i.id)]
         pool = [t for t in targets if t.category in keep]
         for qtype in types:

@@ -75,6 +75,17 @@ class Vocabulary:
     def _lemmas(self, text: str) -> list[str]:
         return [self.lex.lemma(t) for t in self.lex.tokens(normalise(text))]
 
+    def spoken(self, label: str) -> str:
+        """How a person names an instance with raw map label `label`: of '/'-alternatives the first
+        the lexicon knows as a category ('window /outside' -> 'window'), and a trailing room word
+        moved to the front ('cabinet kitchen' -> 'kitchen cabinet')."""
+        parts = [p.strip() for p in normalise(label).split("/") if p.strip()]
+        known = [p for p in parts if any(k == "cat" for k, _ in self.lex.phrase(p))]
+        words = (known or parts or [normalise(label)])[0].split(" ")
+        if len(words) > 1 and any(k == "room" for k, _ in self.lex.phrase(words[-1])):
+            words = [words[-1], *words[:-1]]
+        return " ".join(words)
+
     def canonical(self, label: str) -> str:
         cats = [v for k, v in self.lex.phrase(normalise(label)) if k == "cat"]
         return cats[0] if cats else normalise(label)
@@ -82,7 +93,7 @@ class Vocabulary:
     def forbidden(self, label: str, alt_labels: tuple[str, ...] = ()) -> set[str]:
         """What an abstract query for `label` must not say: the label and alternative labels and
         their head nouns, the category's synonyms and its more general categories."""
-        names = {normalise(label), *map(normalise, alt_labels)}
+        names = {normalise(label), self.spoken(label), *map(normalise, alt_labels)}
         cats = {self.canonical(n) for n in names}
         cats |= {a for c in cats for a in self.lex.ancestors.get(c, ())}
         surfaces = {" ".join(key) for key, kinds in self.lex.phrases.items()
