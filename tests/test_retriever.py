@@ -116,7 +116,7 @@ def test_mtefr_fuses_gate_weights_and_expert_rankings(store, experts_dir):
     assert "obj 0.50" in text and "deciding expert: obj" in text and "chair (office)" in text
 
 
-@pytest.mark.parametrize("reply", ["I think the object expert matters most.", gate(obj=0, room=0),
+@pytest.mark.parametrize("reply", ["I think the object expert matters most.", '{"scores": {"size": 3}}',
                                    ProviderError("HTTP 500", "test", retryable=True)])
 def test_gate_failure_falls_back_to_uniform_weights(store, experts_dir, reply):
     script = Script(gate=reply, obj=ranked(13), room=ranked(10, 14), desc=ranked(10), abs=ranked(10))
@@ -125,6 +125,13 @@ def test_gate_failure_falls_back_to_uniform_weights(store, experts_dir, reply):
     assert len(res.failures) == 1 and res.failures[0].startswith("gate:")
     assert res.calls[0].name == "gate" and res.calls[0].error
     assert res.instance_id == 10  # three experts agree under uniform weights
+
+
+def test_a_gate_that_finds_no_expert_useful_means_uniform_weights(store, experts_dir):
+    script = Script(gate=gate(obj=0, room=0), obj=ranked(13), room=ranked(10, 14), desc=ranked(10), abs=ranked(10))
+    res = make(store, experts_dir, script).ask("the sofa")
+    assert res.gate == pytest.approx({"obj": 0.25, "room": 0.25, "desc": 0.25, "abs": 0.25})
+    assert res.failures == [] and res.instance_id == 10
 
 
 def test_bad_expert_replies_are_dropped_and_recorded(store, experts_dir):

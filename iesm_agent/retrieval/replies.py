@@ -33,15 +33,19 @@ def parse_gate(text: str, experts: Sequence[str]) -> tuple[dict[str, float], dic
     """Gate reply {"scores": {name: 0-4}, "hints": {name: str}} -> (weights summing to 1, hints).
 
     Scores are clipped to [0, 4]; non-numeric scores and unknown names are ignored, missing names
-    score 0. Raises ValueError when no expert gets a positive score."""
+    score 0. A gate that finds no expert useful (all scores 0) gets uniform weights: a valid
+    answer, not a failure. Raises ValueError when the reply has no usable score at all."""
     data = parse_json_reply(text)
     scores = data.get("scores")
     if not isinstance(scores, dict):
         scores = data  # tolerate {"obj": 4, ...} without the wrapper
-    raw = {name: min(max(_number(scores.get(name)) or 0.0, 0.0), GATE_MAX) for name in experts}
+    numbers = {name: _number(scores.get(name)) for name in experts}
+    if all(n is None for n in numbers.values()):
+        raise ValueError("gate reply scores none of the experts")
+    raw = {name: min(max(n or 0.0, 0.0), GATE_MAX) for name, n in numbers.items()}
     total = sum(raw.values())
     if total <= 0:
-        raise ValueError("gate gave no expert a positive score")
+        raw, total = dict.fromkeys(experts, 1.0), float(len(experts))
     hints = data.get("hints")
     hints = hints if isinstance(hints, dict) else {}
     return ({name: s / total for name, s in raw.items()},
