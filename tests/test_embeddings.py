@@ -56,7 +56,7 @@ def test_cache_returns_identical_rows(encoder):
 def test_switch_off_returns_none(monkeypatch):
     monkeypatch.setenv("IESM_EMBEDDINGS", "0")
     assert get_encoder() is None
-    assert OfflineModel().encoder is None
+    assert OfflineModel().encoder() is None
 
 
 @pytest.mark.slow

@@ -11,7 +11,7 @@ import json
 import time
 from typing import Any
 
-from ...embeddings import get_encoder
+from ...embeddings import encoder_name, get_encoder
 from ..base import Capabilities, ChatOptions, Completion, Message, Model, Usage
 from . import tasks
 from .prompt import read_prompt
@@ -27,8 +27,8 @@ class OfflineModel(Model):
     def __init__(self, use_embeddings: bool | None = None):
         self._use_embeddings = use_embeddings
 
-    @property
     def encoder(self):
+        """The sentence encoder, loaded on first need (seconds), or None when not used."""
         return None if self._use_embeddings is False else get_encoder()
 
     def answer(self, messages: list[Message]) -> dict[str, Any]:
@@ -53,5 +53,5 @@ class OfflineModel(Model):
         )
 
     def cache_identity(self) -> dict[str, Any]:
-        encoder = self.encoder
-        return {"model": self.name, "embeddings": encoder.name if encoder is not None else None}
+        return {"model": self.name,
+                "embeddings": None if self._use_embeddings is False else encoder_name()}

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 import numpy as np
 
 from ...lexicon import load_lexicon
@@ -87,7 +89,10 @@ _INNER_GATE_WEIGHT = {"room": 0.25, "desc": 0.25, "abs": 0.5, "all": 0.5}
 _TIE_BREAK = 0.02
 
 
-def rank(prompt: Prompt, encoder=None) -> dict:
+def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
+    """Top-kappa candidate ids. `encoder()` gives the sentence encoder (or None); it is asked
+    for only when embedding similarity would count: for the roles that weigh it, when the
+    query carries description words or gives the lexicon nothing to go on."""
     q = analyse_query(prompt.query)
     ids, records, comp = _candidate_matrix(q, prompt.candidate_lines)
     if not len(ids):
@@ -97,9 +102,11 @@ def rank(prompt: Prompt, encoder=None) -> dict:
     lexical = bool(q.targets or q.afford)
     if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
         weights[_TEXT], weights[_EMB] = max(weights[_TEXT], 0.5), max(weights[_EMB], 1.0)
-    if encoder is not None and weights[_EMB] > 0.25:
+    wants_embeddings = weights[_EMB] > 0.25 and (not lexical or q.attrs or q.extra)
+    enc = encoder() if encoder is not None and wants_embeddings else None
+    if enc is not None:
         comp = comp.copy()
-        comp[:, _EMB] = _embedding_scores(encoder, q.text, records)
+        comp[:, _EMB] = _embedding_scores(enc, q.text, records)
     tier, gate_col = _tiers(q, comp)
     if gate_col is not None and role != "obj":
         weights[gate_col] = min(weights[gate_col], _INNER_GATE_WEIGHT[role])
