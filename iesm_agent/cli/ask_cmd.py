@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import sys
 from pathlib import Path
 
 import typer
@@ -58,34 +59,32 @@ def ask_command(
 
 def _print_human(result, explain: bool) -> None:
     """The chosen instance, then either the short evidence (gate, experts' picks) or, with
-    `explain`, the full explanation (scores and the deciding expert too)."""
-    from rich.console import Console
-    from rich.markup import escape
-
-    console = Console(highlight=False)
+    `explain`, the full explanation (scores and the deciding expert too). Plain text: no
+    terminal library to import at start-up, and clean in pipes and logs."""
+    lines = []
     if result.instance_id is None:
-        console.print("[bold red]no instance found[/]")
+        lines.append("no instance found")
     else:
-        console.print(f"[bold green]#{result.instance_id}[/] [bold]{escape(result.label or '')}[/]"
-                      f" in {escape(result.room or 'no room')}")
+        lines.append(f"#{result.instance_id} {result.label or ''} in {result.room or 'no room'}")
         if result.caption:
-            console.print(f"  {escape(result.caption)}")
+            lines.append(f"  {result.caption}")
     if explain:
-        console.print(escape(result.explain()))
-    elif result.gate:
-        weights = "  ".join(f"{escape(e)} {w:.2f}" for e, w in sorted(result.gate.items(), key=lambda kv: -kv[1]))
-        console.print(f"gate: {weights}")
-    for expert, ids in ({} if explain else result.experts).items():
-        picks = ", ".join(f"#{i} {escape(result.names.get(i, '?'))}" for i in ids) or "(nothing)"
-        console.print(f"  {escape(expert)}: {picks}")
-    console.print(f"[dim]{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached[/]")
-    errors = Console(stderr=True, highlight=False, soft_wrap=True)
-    if result.calls and all(c.error for c in result.calls):
-        errors.print(f"[red]error:[/] all {len(result.calls)} model calls failed; the first: "
-                     f"{escape(result.calls[0].error or '')}")
+        lines.append(result.explain())
     else:
-        for failure in ([] if explain else result.failures):  # the explanation lists them
-            errors.print(f"[yellow]warning:[/] {escape(failure)}")
+        if result.gate:
+            lines.append("gate: " + "  ".join(f"{e} {w:.2f}" for e, w in
+                                             sorted(result.gate.items(), key=lambda kv: -kv[1])))
+        for expert, ids in result.experts.items():
+            picks = ", ".join(f"#{i} {result.names.get(i, '?')}" for i in ids) or "(nothing)"
+            lines.append(f"  {expert}: {picks}")
+    lines.append(f"{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached")
+    print("\n".join(lines))
+    if result.calls and all(c.error for c in result.calls):
+        print(f"error: all {len(result.calls)} model calls failed; the first: {result.calls[0].error}",
+              file=sys.stderr)
+    elif not explain:  # the explanation lists the failures
+        for failure in result.failures:
+            print(f"warning: {failure}", file=sys.stderr)
 
 
 def register(app: typer.Typer) -> None:

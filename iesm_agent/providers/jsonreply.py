@@ -52,19 +52,22 @@ def _reject_constant(name: str) -> Any:
 
 
 def _loads_dict(candidate: str) -> dict[str, Any] | None:
-    """`candidate` parsed as a dict, directly or after `_normalise`; None otherwise."""
+    """`candidate` parsed as a dict, directly or, when strict JSON fails, after `_normalise`
+    (which costs a scan, so valid replies skip it); None otherwise."""
     if not candidate.startswith("{"):
         return None
-    for attempt in (candidate, _normalise(candidate)):
-        if attempt is None:
-            continue
-        try:
-            value = json.loads(attempt, parse_constant=_reject_constant)
-        except ValueError:
-            continue
-        if isinstance(value, dict):
-            return value
-    return None
+    value = _strict_loads(candidate)
+    if not isinstance(value, dict):
+        repaired = _normalise(candidate)
+        value = None if repaired is None else _strict_loads(repaired)
+    return value if isinstance(value, dict) else None
+
+
+def _strict_loads(text: str) -> Any:
+    try:
+        return json.loads(text, parse_constant=_reject_constant)
+    except ValueError:
+        return None
 
 
 def _matching_brace(text: str, start: int) -> int | None:

@@ -16,7 +16,6 @@ from typing import Any, Callable
 
 from ..errors import IesmError
 from .base import Model
-from .cache import CachedModel
 
 Factory = Callable[..., Model]
 
@@ -163,6 +162,8 @@ def get_model(spec: str | Model, *, base_url: str | None = None, api_key_env: st
                             "model", spec)
     if cache is None or cache is False:
         return model
+    from .cache import CachedModel  # diskcache only when a cache is asked for
+
     if isinstance(model, CachedModel):
         return model
     return CachedModel(model, None if cache is True else cache)
