@@ -35,17 +35,18 @@ class Prompt:
 def read_prompt(messages: list[Message]) -> Prompt:
     """Parse the rendered prompt; missing pieces stay empty, nothing raises."""
     text = "\n".join(m.text() for m in messages if m.role != "assistant")
-    if "ranked_instance_ids" in text:
+    instructions = _without_fences(text)  # fenced data is data: it never sets the task
+    if "ranked_instance_ids" in instructions:
         task = "rank"
-    elif '"scores"' in text:
+    elif '"scores"' in instructions:
         task = "gate"
-    elif '"object"' in text and '"room"' in text:
+    elif '"object"' in instructions and '"room"' in instructions:
         task = "keyword"
     else:
         task = "unknown"
     prompt = Prompt(task=task, query=_fenced_string(text, "query"), hint=_fenced_string(text, "hint"))
     prompt.focus = (_between(text, "focus") or "").strip()
-    kappa = _AT_MOST.match(text, max(0, text.lower().rfind("at most")))
+    kappa = _AT_MOST.match(instructions, max(0, instructions.lower().rfind("at most")))
     if kappa:
         prompt.kappa = max(1, int(kappa.group(1)))
     prompt.candidate_lines = _lines(text, "candidates")
@@ -63,6 +64,14 @@ def focus_role(focus: str) -> str:
             if 0 <= pos < best_pos:
                 best, best_pos = role, pos
     return best
+
+
+_FENCES = re.compile(r"<(query|hint|candidates|experts)>.*?</\1>", re.S)
+
+
+def _without_fences(text: str) -> str:
+    """`text` with the fenced data blocks (query, hint, candidates, experts) cut out."""
+    return _FENCES.sub(" ", text)
 
 
 def _between(text: str, tag: str) -> str | None:
