@@ -187,3 +187,30 @@ def test_pickled_member_is_refused(saved, tmp_path):
 
 def test_not_a_file(tmp_path):
     _expect(tmp_path / "nope.iesm", "no such map file")
+
+
+def test_random_corruption_is_always_a_clear_error(tmp_path, apartment_path):
+    """Flipped bytes anywhere (headers, offsets, compressed data) and truncation: a map loads or
+    raises MapFormatError, never another exception."""
+    import random
+
+    from iesm_agent.errors import MapFormatError
+
+    data = apartment_path.read_bytes()
+    rng = random.Random(7)
+    outcomes = {"loaded": 0, "refused": 0}
+    for i in range(600):
+        corrupted = bytearray(data)
+        for _ in range(rng.randint(1, 12)):
+            corrupted[rng.randrange(len(corrupted))] = rng.randrange(256)
+        if i % 5 == 0:
+            corrupted = corrupted[:rng.randrange(len(corrupted))]
+        path = tmp_path / "c.iesm"
+        path.write_bytes(bytes(corrupted))
+        try:
+            load_map(path)
+            outcomes["loaded"] += 1
+        except MapFormatError as exc:
+            assert str(path) in str(exc)
+            outcomes["refused"] += 1
+    assert outcomes["refused"] > 500

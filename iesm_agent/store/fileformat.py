@@ -19,6 +19,7 @@ from __future__ import annotations
 import io
 import json
 import os
+import struct
 import tempfile
 import zipfile
 import zlib
@@ -135,8 +136,11 @@ def load_map(path: str | Path) -> SceneMap:
         with zipfile.ZipFile(path) as zf:
             manifest = _read_manifest(zf, path)
             arrays = {entry["name"]: _read_array(zf, entry, path) for entry in manifest.pop("arrays")}
-    except (zipfile.BadZipFile, zlib.error, EOFError) as exc:
+    except (zipfile.BadZipFile, zlib.error, EOFError, NotImplementedError, ValueError, struct.error) as exc:
+        # corrupted headers surface as any of these (e.g. "zip file version 23.8")
         raise MapFormatError(f"not a valid .iesm archive (truncated or corrupted): {exc}", path) from exc
+    except OSError as exc:  # unreadable, or a corrupted offset that seeks out of the file
+        raise MapFormatError(f"cannot read the archive (unreadable or corrupted): {exc}", path) from exc
     occ = None
     if any(name.startswith("occupancy.") for name in arrays):
         try:
