@@ -89,3 +89,15 @@ def test_write_suite_round_trips(tmp_path, tiny_map):
     write_suite(queries, path)
     assert [e.query for e in load_suites([path]).entries] == queries
     assert list(tmp_path.glob(".out.jsonl.*")) == []  # no temporary file left behind
+
+
+def test_a_broken_map_is_an_error_of_the_lines_that_use_it(tmp_path, tiny_map):
+    broken = tmp_path / "maps" / "broken.iesm"
+    broken.write_bytes(tiny_map.read_bytes()[:200])  # truncated archive
+    path = _write(tmp_path, [_line(), _line(id="q2", map="maps/broken.iesm"),
+                             _line(id="q3", map="maps/broken.iesm")])
+    with pytest.raises(IesmError, match=r"suite.jsonl:line 2: .*broken.iesm: not a valid .iesm archive"):
+        load_suites([path])
+    suite = load_suites([path], skip_invalid=True)
+    assert [e.query.id for e in suite.entries] == ["q1"]
+    assert [e.where for e in suite.errors] == ["line 2", "line 3"]

@@ -43,15 +43,22 @@ class SuiteQuery(BaseModel):
 
 
 class MapRegistry:
-    """Loads each map file once (by resolved path)."""
+    """Loads each map file once (by resolved path); a map that fails to load fails once, and
+    every later `get` re-raises the same error without reading the file again."""
 
     def __init__(self) -> None:
-        self._maps: dict[Path, SceneMap] = {}
+        self._maps: dict[Path, SceneMap | IesmError] = {}
 
     def get(self, path: Path) -> SceneMap:
         if path not in self._maps:
-            self._maps[path] = open_map(path)
-        return self._maps[path]
+            try:
+                self._maps[path] = open_map(path)
+            except IesmError as exc:
+                self._maps[path] = exc
+        found = self._maps[path]
+        if isinstance(found, IesmError):
+            raise found
+        return found
 
 
 @dataclass
@@ -74,9 +81,9 @@ def _check(query: SuiteQuery, path: Path, registry: MapRegistry) -> Path:
     """Resolved map path of `query`; raises ValueError when its map or ids are unknown."""
     try:
         map_path = resolve_map_path(query.map, path.parent)
-    except IesmError as exc:
-        raise ValueError(exc.message) from exc
-    ids = {inst.id for inst in registry.get(map_path).instances}
+        ids = {inst.id for inst in registry.get(map_path).instances}
+    except IesmError as exc:  # an unknown or unusable map is this line's problem
+        raise ValueError(str(exc) if exc.source else exc.message) from exc
     unknown = [i for i in query.accept if i not in ids]
     if unknown:
         which = "target" if query.target in unknown else "accept id"
