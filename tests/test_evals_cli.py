@@ -14,6 +14,7 @@ import pytest
 from typer.testing import CliRunner
 
 from iesm_agent.cli import app
+from iesm_agent.errors import IesmError
 from iesm_agent.evals.generate import generate_suite
 from iesm_agent.evals.journal import read_journal
 
@@ -50,11 +51,11 @@ def test_fail_under_sets_the_exit_status(tmp_path, suite, no_embeddings):
 
 def test_bad_fail_under_and_existing_run_dir_are_user_errors(tmp_path, suite, no_embeddings):
     result = CliRunner().invoke(app, ["eval", str(suite), "-o", str(tmp_path / "r"), "--fail-under", "speed=3"])
-    assert result.exit_code != 0 and "expected METRIC=VALUE" in str(result.exception)
+    assert isinstance(result.exception, IesmError) and "expected METRIC=VALUE" in str(result.exception)
     (tmp_path / "r").mkdir()
     (tmp_path / "r" / "results.jsonl").write_text("")
     result = CliRunner().invoke(app, ["eval", str(suite), "-m", "keyword", "-o", str(tmp_path / "r")])
-    assert "run directory is not empty" in str(result.exception)
+    assert isinstance(result.exception, IesmError) and "run directory is not empty" in str(result.exception)
 
 
 def _eval(suite, run, server, *extra):

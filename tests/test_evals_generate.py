@@ -10,7 +10,7 @@ import pytest
 from iesm_agent.errors import IesmError
 from iesm_agent.evals.generate import TYPES, generate_suite, parse_types, top_categories
 from iesm_agent.evals.suite import load_suites
-from iesm_agent.evals.vocab import Vocabulary, normalise, room_name
+from iesm_agent.evals.vocab import Vocabulary, room_name
 from iesm_agent.providers import FunctionModel
 
 

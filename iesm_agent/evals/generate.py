@@ -21,7 +21,7 @@ from ..providers.base import ChatOptions, Model
 from ..store.model import Instance, SceneMap
 from ..store.refs import resolve_map_path
 from .suite import MapRegistry, SuiteQuery, write_suite
-from .vocab import Vocabulary, normalise, room_name
+from .vocab import Vocabulary, room_name
 
 TYPES: tuple[str, ...] = ("o", "or", "od", "ord", "ard")
 TOP_CATEGORIES = 30

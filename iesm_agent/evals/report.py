@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Sequence
 
 from .journal import ResultRecord
-from .metrics import QUERY_TYPES, TYPE_TITLES, summarize
+from .metrics import QUERY_TYPES, TYPE_TITLES, UNTYPED, summarize
 from .significance import compare_to_first
 
 PLOT = "osr_by_type.png"
@@ -18,7 +18,7 @@ PLOT = "osr_by_type.png"
 def build_summary(records: Sequence[ResultRecord], variants: Sequence[str], extra: dict | None = None) -> dict:
     """Metrics per variant plus paired McNemar tests of the first variant against the others."""
     summary = summarize(records, variants)
-    types = {r.id: r.type or "-" for r in records}
+    types = {r.id: r.type or UNTYPED for r in records}
     correct: dict[str, dict[str, bool]] = {v: {} for v in summary["methods"]}
     for r in records:
         correct[r.variant][r.id] = r.correct

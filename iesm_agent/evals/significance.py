@@ -41,11 +41,11 @@ def compare_to_first(correct: dict[str, dict[str, bool]], types: dict[str, str],
     variants = list(order)
     if len(variants) < 2:
         return []
+    groups: dict[str, set[str]] = {"overall": set(types)}
+    for qid, qtype in types.items():
+        groups.setdefault(qtype, set()).add(qid)
     base, out = variants[0], []
     for other in variants[1:]:
-        groups: dict[str, set[str]] = {"overall": set(types)}
-        for qid, qtype in types.items():
-            groups.setdefault(qtype, set()).add(qid)
         for group, ids in groups.items():
             test = paired_test({q: v for q, v in correct[base].items() if q in ids},
                                {q: v for q, v in correct[other].items() if q in ids})

@@ -73,17 +73,14 @@ def _strict_loads(text: str) -> Any:
 def _matching_brace(text: str, start: int) -> int | None:
     """Index of the `}` closing the `{` at `start`, skipping quoted strings; None if unbalanced."""
     depth = 0
-    quote = None
     i = start
     while i < len(text):
         ch = text[i]
-        if quote:
-            if ch == "\\":
-                i += 1
-            elif ch == quote:
-                quote = None
-        elif ch in "\"'":
-            quote = ch
+        if ch in "\"'":
+            end = _string_end(text, i)
+            if end is None:
+                return None
+            i = end
         elif ch in "{[":
             depth += 1
         elif ch in "}]":

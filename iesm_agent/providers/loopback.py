@@ -200,26 +200,26 @@ class LoopbackServer:
         if self.delay_s:
             self._stop.wait(self.delay_s)
         fault, body = record.fault, record.body
-        if fault is not None and fault.kind == "slow":
+        kind = fault.kind if fault is not None else None
+        if kind == "slow":
             if self._stop.wait(fault.seconds):
                 return 503, {}, _json({"error": {"message": "server shutting down"}})
-        if fault is not None and fault.kind == "status":
+        if kind == "status":
             headers = {"Retry-After": fault.retry_after} if fault.retry_after else {}
             return fault.status, headers, _json({"error": {"message": f"injected HTTP {fault.status}",
                                                            "code": fault.status}})
-        if fault is not None and fault.kind == "non_json":
+        if kind == "non_json":
             return 200, {"Content-Type": "text/html"}, b"<html><body>502 Bad Gateway</body></html>"
-        if fault is not None and fault.kind == "no_choices":
+        if kind == "no_choices":
             return 200, {}, _json({"id": "x", "object": "chat.completion", "model": "loopback"})
-        if (fault is not None and fault.kind == "reject_response_format"
-                and isinstance(body, dict) and "response_format" in body):
+        if kind == "reject_response_format" and isinstance(body, dict) and "response_format" in body:
             return 400, {}, _json({"error": {"message": "response_format is not supported by "
                                              "this server", "param": "response_format"}})
         try:
             messages, options = _parse_request(body)
         except (ValueError, ValidationError) as exc:
             return 400, {}, _json({"error": {"message": f"bad request: {exc}"}})
-        if fault is not None and fault.kind == "bad_reply":
+        if kind == "bad_reply":
             text, usage = fault.text, {"prompt_tokens": 0, "completion_tokens": 0}
         else:
             try:
@@ -227,7 +227,7 @@ class LoopbackServer:
             except Exception as exc:  # the served model failed: a server answers 500
                 return 500, {}, _json({"error": {"message": f"model failed: {exc}"}})
             text, usage = completion.text, completion.usage.model_dump()
-        content = None if fault is not None and fault.kind == "no_content" else text
+        content = None if kind == "no_content" else text
         return 200, {}, _json({
             "id": f"chatcmpl-{record.index}", "object": "chat.completion",
             "created": int(time.time()), "model": body.get("model", "loopback"),
@@ -303,7 +303,8 @@ def _parse_request(body: Any) -> tuple[list[Message], ChatOptions]:
     schema = None
     fmt = body.get("response_format")
     if isinstance(fmt, dict) and fmt.get("type") == "json_schema":
-        schema = (fmt.get("json_schema") or {}).get("schema")
+        spec = fmt.get("json_schema")
+        schema = spec.get("schema") if isinstance(spec, dict) else None
     options = ChatOptions(temperature=body.get("temperature", 0.0),
                           max_tokens=body.get("max_tokens"), seed=body.get("seed"),
                           json_schema=schema)
@@ -312,7 +313,8 @@ def _parse_request(body: Any) -> tuple[list[Message], ChatOptions]:
 
 def _parse_part(part: Any) -> TextPart | ImagePart:
     if isinstance(part, dict) and part.get("type") == "image_url":
-        url = str((part.get("image_url") or {}).get("url", ""))
+        image = part.get("image_url")
+        url = str(image.get("url", "")) if isinstance(image, dict) else ""
         head, _, data = url.partition(",")
         if not head.startswith("data:") or not head.endswith(";base64"):
             raise ValueError("image_url must be a base64 data URL")

@@ -177,7 +177,7 @@ class OpenAICompatModel(Model):
             body["max_tokens"] = options.max_tokens
         if options.seed is not None:
             body["seed"] = options.seed
-        if structured and options.json_schema is not None:
+        if structured:  # only ever True with a json_schema (see `acomplete`)
             schema = options.json_schema
             name = re.sub(r"[^A-Za-z0-9_-]", "_", str(schema.get("title") or "reply"))[:64]
             body["response_format"] = {"type": "json_schema",

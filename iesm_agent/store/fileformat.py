@@ -35,11 +35,12 @@ from .model import SCHEMA_VERSION, InstanceGrid, SceneMap
 MANIFEST = "manifest.json"
 _ARRAYS = ("occupancy.cells", "occupancy.indptr", "occupancy.ids", "occupancy.top",
            "room_map", "obstacles", "embeddings")
+_ARRAY_KINDS = "biuf"  # bool, signed and unsigned integers, floats
 _INT_DTYPES = [np.dtype(t) for t in ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64")]
 
 
 def _smallest_int_dtype(values: np.ndarray) -> np.dtype:
-    """Smallest integer dtype holding every value of `values` (int64 for empty arrays)."""
+    """Smallest integer dtype holding every value of `values` (uint8 for empty arrays)."""
     if values.size == 0:
         return np.dtype(np.uint8)
     lo, hi = int(values.min()), int(values.max())
@@ -186,6 +187,13 @@ def _read_manifest(zf: zipfile.ZipFile, path: Path) -> dict:
                 raise MapFormatError(f"missing or invalid {key!r}", path, f"{where}.{key}")
         if entry["encoding"] not in ("raw", "delta"):
             raise MapFormatError(f"unknown encoding {entry['encoding']!r}", path, f"{where}.encoding")
+        for key in ("dtype", "disk_dtype"):  # only the numeric and bool arrays `save_map` writes
+            try:
+                kind = np.dtype(entry[key]).kind
+            except (TypeError, ValueError, OverflowError):
+                kind = None
+            if kind is None or kind not in _ARRAY_KINDS:
+                raise MapFormatError(f"unsupported array dtype {entry[key]!r}", path, f"{where}.{key}")
     return manifest
 
 
@@ -200,7 +208,7 @@ def _read_array(zf: zipfile.ZipFile, entry: dict, path: Path) -> np.ndarray:
         if disk.dtype != np.dtype(entry["disk_dtype"]):
             raise ValueError(f"dtype {disk.dtype} does not match manifest {entry['disk_dtype']}")
         arr = _decode(entry, disk)
-    except (ValueError, TypeError, OSError) as exc:
+    except (ValueError, TypeError, OverflowError, OSError) as exc:  # OverflowError: a `base` out of range
         raise MapFormatError(f"unreadable array: {exc}", path, member) from exc
     if list(arr.shape) != entry["shape"]:
         raise MapFormatError(f"shape {list(arr.shape)} does not match manifest {entry['shape']}", path, member)

@@ -184,7 +184,7 @@ class MapStore:
             self._token_hits[tok] = hit
         return hit
 
-    def _lexical(self, text: str, fields: tuple[str, ...] = tuple(_FIELDS)) -> np.ndarray:
+    def _lexical(self, text: str) -> np.ndarray:
         """(N,) lexical score in [0, 1] of every instance for `text` (see module docstring)."""
         qtoks = list(dict.fromkeys(t for t in tokens(text) if t not in STOPWORDS))
         total = np.zeros(self._n)
@@ -197,7 +197,7 @@ class MapStore:
                 continue
             w = float(self._idf[vidx[np.argmax(strength)]])
             best = np.zeros(self._n)
-            for f in fields:
+            for f in _FIELDS:
                 for v, s in zip(vidx, strength):
                     rows = self._postings[f][v]
                     if len(rows):
@@ -208,8 +208,7 @@ class MapStore:
             weight_sum += w
         if weight_sum == 0:
             return total
-        cov = np.minimum(coverage / self._label_len, 1.0) if "label" in fields else 0.0
-        return 0.75 * total / weight_sum + 0.25 * cov
+        return 0.75 * total / weight_sum + 0.25 * np.minimum(coverage / self._label_len, 1.0)
 
     def _encoder_for_map(self):
         """The embedding encoder when it matches the map's embeddings, else None (cached)."""

@@ -140,6 +140,8 @@ def _load_entries(path: Path) -> dict[int, _Entry]:
     for key, value in data.items():
         if not key.strip().lstrip("-").isdigit():
             raise MapFormatError("instance key is not an integer id", path, repr(key))
+        if int(key) in entries:  # e.g. "7" and "07": one instance would silently replace the other
+            raise MapFormatError(f"duplicate instance id {int(key)}", path, repr(key))
         try:
             entries[int(key)] = _Entry.model_validate(value)
         except ValidationError as exc:

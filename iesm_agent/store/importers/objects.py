@@ -25,7 +25,7 @@ PositiveVec3 = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)
 
 
 class RoomSpec(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     id: int
     label: str = Field(min_length=1)
@@ -40,7 +40,7 @@ class RoomSpec(BaseModel):
 
 
 class ObjectSpec(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)  # NaN/inf would break the grid
 
     id: int
     label: str = Field(min_length=1)
@@ -190,10 +190,11 @@ def import_objects(path: str | Path, cell_size: float = 0.05) -> SceneMap:
     except ValidationError as exc:
         err = exc.errors()[0]
         raise MapFormatError(err["msg"], path, field_path(err["loc"])) from exc
-    ids = [o.id for o in spec.objects]
-    for i, oid in enumerate(ids):
-        if oid in ids[:i]:
-            raise MapFormatError(f"duplicate object id {oid}", path, f"objects[{i}].id")
+    seen: set[int] = set()
+    for i, obj in enumerate(spec.objects):
+        if obj.id in seen:
+            raise MapFormatError(f"duplicate object id {obj.id}", path, f"objects[{i}].id")
+        seen.add(obj.id)
     rooms, obj_rooms = _resolve_rooms(spec, path)
     grid = _grid_for(spec, cell_size)
     room_map = _rasterise_polygons(spec.rooms or [], grid)
