@@ -236,3 +236,17 @@ def test_color_names(rgb, name):
 def test_color_name_range():
     with pytest.raises(ValueError):
         color_name((0, 0, 256))
+
+
+def test_far_apart_objects_are_refused_before_allocating_the_grid(tmp_path):
+    from iesm_agent.errors import MapFormatError
+    from iesm_agent.store.importers import import_map
+
+    objs = {"scene_id": "far", "objects": [
+        {"id": 1, "label": "chair", "center": [0, 0, 0.4], "size": [0.5, 0.5, 0.8]},
+        {"id": 2, "label": "chair", "center": [5000, 5000, 0.4], "size": [0.5, 0.5, 0.8]}]}
+    path = tmp_path / "far.json"
+    path.write_text(json.dumps(objs))
+    with pytest.raises(MapFormatError, match=r"far.json:grid: .*larger --cell-size"):
+        import_map(path)
+    assert import_map(path, cell_size=2.0).grid.width < 3000  # a coarser grid fits

@@ -17,6 +17,8 @@ from ...errors import MapFormatError
 from ..model import SceneMap
 
 FORMATS = ("objects", "iesm")
+#: largest grid an importer builds (cells); 5000 x 5000 is 125 m square at 2.5 cm
+MAX_GRID_CELLS = 25_000_000
 
 
 def field_path(loc: tuple[Any, ...]) -> str:
@@ -25,6 +27,15 @@ def field_path(loc: tuple[Any, ...]) -> str:
     for part in loc:
         out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
     return out
+
+
+def check_grid_size(height: int, width: int, path: Path) -> None:
+    """Refuse a grid too large to hold in memory (far-apart objects, a corrupted PLY, a tiny
+    cell size) with a `MapFormatError` instead of exhausting memory."""
+    if height * width > MAX_GRID_CELLS:
+        raise MapFormatError(f"the map would need a grid of {height} x {width} cells (more than "
+                             f"{MAX_GRID_CELLS:,}): check the coordinates or use a larger --cell-size",
+                             path, "grid")
 
 
 def read_json(path: Path) -> Any:

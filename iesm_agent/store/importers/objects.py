@@ -18,7 +18,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ...errors import MapFormatError
 from ..colors import color_name
 from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
-from . import field_path, read_json
+from . import check_grid_size, field_path, read_json
 
 MARGIN = 0.25  # m of free space around the union of boxes
 PositiveVec3 = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
@@ -131,7 +131,7 @@ def _box_cells(obj: ObjectSpec, grid: GridSpec) -> np.ndarray:
     return (rows[:, None] * grid.width + cols[None, :]).ravel().astype(np.int64)
 
 
-def _grid_for(spec: ObjectList, cell_size: float) -> GridSpec:
+def _grid_for(spec: ObjectList, cell_size: float, path: Path) -> GridSpec:
     lo = np.full(2, np.inf)
     hi = np.full(2, -np.inf)
     for obj in spec.objects:
@@ -145,6 +145,7 @@ def _grid_for(spec: ObjectList, cell_size: float) -> GridSpec:
         lo = hi = np.zeros(2)
     origin = np.floor((lo - MARGIN) / cell_size) * cell_size
     shape = np.ceil((hi + MARGIN - origin) / cell_size).astype(int)
+    check_grid_size(int(shape[1]), int(shape[0]), path)
     return GridSpec(cell_size=cell_size, origin=(float(origin[0]), float(origin[1])),
                     height=int(shape[1]), width=int(shape[0]))
 
@@ -196,7 +197,7 @@ def import_objects(path: str | Path, cell_size: float = 0.05) -> SceneMap:
             raise MapFormatError(f"duplicate object id {obj.id}", path, f"objects[{i}].id")
         seen.add(obj.id)
     rooms, obj_rooms = _resolve_rooms(spec, path)
-    grid = _grid_for(spec, cell_size)
+    grid = _grid_for(spec, cell_size, path)
     room_map = _rasterise_polygons(spec.rooms or [], grid)
     instances, cells_all, ids_all, tops_all = [], [], [], []
     for obj, room in zip(spec.objects, obj_rooms):
