@@ -109,6 +109,7 @@ def analyse_query(text: str) -> QueryInfo:
         end, head = head.start, None  # "something (that) gives light": light is what it does
     info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
     afford: dict[str, float] = {}
+    landmark_words: set[str] = set()
     attr_spans: list[Span] = []
     cue_covered: set[int] = set()
     for s in spans:
@@ -152,6 +153,8 @@ def analyse_query(text: str) -> QueryInfo:
             for c in s.values("cat"):
                 if c not in _UNSPECIFIC:
                     info.targets.setdefault(c, _THEME_WEIGHT)
+            # a landmark ("the lamp next to the bed"): captions that mention it are evidence
+            landmark_words.update(lemmas[s.start:s.end])
         elif s.has("gen"):
             _add_entry(afford, lex.generic[s.values("gen")[0]], 0.8)
 
@@ -167,7 +170,7 @@ def analyse_query(text: str) -> QueryInfo:
     stop = skip | bounds | lex.words["abstract"] | lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
     info.extra = frozenset(t for i, t in enumerate(lemmas)
                            if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
-    words = set(info.extra)
+    words = set(info.extra) | landmark_words
     for slot in info.slots:
         words.update(slot.base.split())
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
