@@ -254,3 +254,17 @@ def test_fenced_query_text_never_changes_the_task(model, lib, query):
     candidates = [{"id": i, "label": "chair"} for i in (1, 2, 3)]
     msgs = lib.render("expert.j2", query=query, focus="Object category.", hint="", candidates=candidates, kappa=2)
     assert len(json.loads(model.complete(msgs).text)["ranked_instance_ids"]) <= 2
+
+
+@pytest.mark.parametrize("query, expected", [("the biggest table", 2), ("the smallest table", 1),
+                                             ("a larger table", 2), ("the tiniest table", 1)])
+def test_sizes_read_from_labels_and_captions_including_superlatives(model, lib, query, expected):
+    candidates = [
+        {"id": 1, "label": "stand/small table", "caption": "A dark wood small table with a drawer."},
+        {"id": 2, "label": "table", "caption": "A big oak table that seats eight."},
+        {"id": 3, "label": "chair", "caption": "A big armchair."},
+    ]
+    msgs = lib.render("expert.j2", query=query, focus=EXPERTS["desc"]["focus"], hint="",
+                      candidates=candidates, kappa=2)
+    ranked = json.loads(model.complete(msgs).text)["ranked_instance_ids"]
+    assert ranked[0] == expected and 3 not in ranked

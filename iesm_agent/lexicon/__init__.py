@@ -146,6 +146,10 @@ class Lexicon:
             return 1.0
         return self.room_related.get((a, b), 0.0)
 
+    def contradicts(self, kind: str, query: str, value: str) -> bool:
+        """True when a candidate attribute says the opposite of the query's (big vs small)."""
+        return kind == "size" and _OPPOSITE_SIZES.get(query) == value
+
     def attr_sim(self, kind: str, query: str, value: str) -> float:
         """Match of a query attribute against a candidate attribute of the same kind."""
         if query == value:
@@ -155,6 +159,9 @@ class Lexicon:
         if kind == "material" and value in self.related_materials.get(query, ()):
             return 0.5
         return 0.0
+
+
+_OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short": "tall"}
 
 
 def _guess_lemma(token: str, vocab: frozenset[str]) -> str:

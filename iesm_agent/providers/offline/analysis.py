@@ -122,11 +122,7 @@ def analyse_query(text: str) -> QueryInfo:
             info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
-            # a modifier inside the category phrase is also a description ("mesh chair": mesh)
-            for k in range(s.start, s.end) if s.end - s.start > 1 else ():
-                kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
-                if kinds:
-                    attr_spans.append(Span(k, k + 1, kinds))
+            attr_spans.extend(_modifier_spans(lex, lemmas, s))
             _implied_rooms(lex, lemmas[s.start:s.end], info)
             continue
         if s.has("gen") and in_target:
@@ -217,6 +213,17 @@ def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
     base = [p for p in core if p not in lex.shades] or core
     tail = ["like"] if imitation else []
     return " ".join(core + tail), " ".join(base + tail)
+
+
+def _modifier_spans(lex: Lexicon, lemmas: list[str], span: Span) -> list[Span]:
+    """Attribute words inside a multi-word category phrase, as one-word spans: a modifier there
+    is also a description ("mesh chair": mesh; "small table": small)."""
+    out = []
+    for k in range(span.start, span.end) if span.end - span.start > 1 else ():
+        kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
+        if kinds:
+            out.append(Span(k, k + 1, kinds))
+    return out
 
 
 def _slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[list[Slot], set[int]]:
@@ -364,7 +371,12 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
         if not lemmas:
             continue
         stems.update(_word_stems(lex, lemmas))
-        spans = [sp for sp in lex.scan(lemmas) if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds)]
+        spans: list[Span] = []
+        for sp in lex.scan(lemmas):
+            if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds):
+                spans.append(sp)
+            else:
+                spans.extend(_modifier_spans(lex, lemmas, sp))
         slots.extend(_slots(lex, lemmas, spans)[0])
     return tuple(dict.fromkeys(slots)), frozenset(stems)
 

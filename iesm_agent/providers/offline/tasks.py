@@ -111,7 +111,7 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     if gate_col is not None and role != "obj":
         weights[gate_col] = min(weights[gate_col], _INNER_GATE_WEIGHT[role])
     scores = comp @ (weights + _TIE_BREAK) + tier * 10.0
-    relevant = (comp @ weights) > 1e-9
+    relevant = ((comp @ weights) > 1e-9) | (tier >= 2)  # the named kind stays, whatever else it lacks
     order = np.lexsort((ids, -scores))
     ranked: list[int] = []
     for i in order:
@@ -200,7 +200,8 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
 def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
     """Best match of the query's `index`-th attribute against a candidate: the same words 1.0,
     the same words up to shade 0.9, its words in the candidate's text 0.85, the same family
-    0.7-0.8, a related family 0.4."""
+    0.7-0.8, a related family 0.4; -0.5 when the candidate says the opposite and nothing matches
+    ("the biggest table" against a small table)."""
     memo = q.memo
     best = 0.0
     for other in r.slots:
@@ -219,6 +220,11 @@ def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
             words = memo[key] = frozenset(stem(w) for w in q.slots[index].base.split() if w != "like")
         if words and words <= r.stems:
             best = 0.85
+    if best == 0.0:
+        slot = q.slots[index]
+        if any(other.kind == slot.kind and any(lex.contradicts(slot.kind, a, b) for a in slot.values
+                                               for b in other.values) for other in r.slots):
+            return -0.5
     return best
 
 
