@@ -71,10 +71,9 @@ def _installed() -> bool:
 def encoder_name() -> str | None:
     """The name of the encoder `get_encoder()` would give (None when off or not installed),
     without loading it (loading takes seconds)."""
-    if _disabled() or not _installed():
-        return None
-    loaded = _STATE.get("encoder", Encoder)
-    return None if loaded is None else Encoder.name
+    if _disabled() or not _installed() or ("encoder" in _STATE and _STATE["encoder"] is None):
+        return None  # off, missing, or already failed to load
+    return Encoder.name
 
 
 def get_encoder() -> Encoder | None:

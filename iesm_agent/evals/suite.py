@@ -48,6 +48,7 @@ class MapRegistry:
 
     def __init__(self) -> None:
         self._maps: dict[Path, SceneMap | IesmError] = {}
+        self._ids: dict[Path, frozenset[int]] = {}
 
     def get(self, path: Path) -> SceneMap:
         if path not in self._maps:
@@ -59,6 +60,12 @@ class MapRegistry:
         if isinstance(found, IesmError):
             raise found
         return found
+
+    def ids(self, path: Path) -> frozenset[int]:
+        """The instance ids of the map at `path` (computed once per map)."""
+        if path not in self._ids:
+            self._ids[path] = frozenset(inst.id for inst in self.get(path).instances)
+        return self._ids[path]
 
 
 @dataclass
@@ -81,7 +88,7 @@ def _check(query: SuiteQuery, path: Path, registry: MapRegistry) -> Path:
     """Resolved map path of `query`; raises ValueError when its map or ids are unknown."""
     try:
         map_path = resolve_map_path(query.map, path.parent)
-        ids = {inst.id for inst in registry.get(map_path).instances}
+        ids = registry.ids(map_path)
     except IesmError as exc:  # an unknown or unusable map is this line's problem
         raise ValueError(str(exc) if exc.source else exc.message) from exc
     unknown = [i for i in query.accept if i not in ids]

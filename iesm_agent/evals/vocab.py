@@ -4,14 +4,12 @@ what an object is used for (affordance cues), and colours/materials for descript
 
 from __future__ import annotations
 
-import json
 import re
 from collections import Counter
 from dataclasses import dataclass
-from importlib import resources
 from typing import Optional
 
-from ..lexicon import Lexicon, load_lexicon
+from ..lexicon import Lexicon, load_lexicon, read_data
 
 _SPACES = re.compile(r"[\s_\-]+")
 _ROOM_NUMBER = re.compile(r"\s*\d+$")
@@ -56,9 +54,8 @@ class Vocabulary:
     @classmethod
     def load(cls) -> "Vocabulary":
         lex = load_lexicon()
-        data = resources.files("iesm_agent.lexicon")
-        entries = json.loads(data.joinpath("affordances.json").read_text(encoding="utf-8"))["entries"]
-        groups = json.loads(data.joinpath("categories.json").read_text(encoding="utf-8"))["groups"]
+        entries = read_data("affordances.json")["entries"]
+        groups = read_data("categories.json")["groups"]
         # a cue's first word is a noun when category names start with it ("coffee table") and no
         # other cue uses it as a verb taking an object ("wash hand")
         nouns = {normalise(s).split(" ")[0] for c, syns in groups.items() for s in (c, *syns)}

@@ -191,7 +191,9 @@ def _guess_lemma(token: str, vocab: frozenset[str]) -> str:
     return token
 
 
-def _read(name: str) -> dict:
+@lru_cache(maxsize=None)
+def read_data(name: str) -> dict:
+    """A shipped lexicon data file (e.g. "affordances.json"), parsed once; do not mutate it."""
     return json.loads(resources.files(__name__).joinpath(name).read_text(encoding="utf-8"))
 
 
@@ -225,8 +227,8 @@ def _weights(core: list[str], related: list[str]) -> dict[str, float]:
 @lru_cache(maxsize=1)
 def load_lexicon() -> Lexicon:
     """Load and compile the shipped lexicon (once per process)."""
-    cats, rooms, attrs = _read("categories.json"), _read("rooms.json"), _read("attributes.json")
-    affs, lang = _read("affordances.json"), _read("language.json")
+    cats, rooms, attrs = read_data("categories.json"), read_data("rooms.json"), read_data("attributes.json")
+    affs, lang = read_data("affordances.json"), read_data("language.json")
 
     raw: list[tuple[str, str, str]] = []  # (surface phrase, kind, value)
     for canon, syns in cats["groups"].items():
