@@ -35,7 +35,8 @@ def _root(
     """Goal retrieval over instance-enriched 2.5D semantic maps (IESM + MTEFR)."""
 
 
-_COMMAND_MODULES = ("store_cmds", "ask_cmd", "eval_cmds", "serve_cmds", "mapping_cmds", "nav_cmds",
+_COMMAND_MODULES = ("store_cmds", "ask_cmd", "eval_cmds", "serve_cmds", "sim_cmds", "mapping_cmds",
+                    "nav_cmds",
                     "caption_cmds")
 
 
