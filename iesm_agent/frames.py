@@ -1,0 +1,337 @@
+"""RGB-D frame sets on disk: the layout `iesm sim` writes and `iesm build-map` reads.
+
+DIR/scene.json, DIR/intrinsics.json, DIR/frames/NNNNNN.{rgb.png, depth.png, pose.txt, seg.npz,
+inst.png}, DIR/gt/ (simulator ground truth). See README "Simulator and frame layout".
+Units: metres, world z up with the floor at z = 0; camera frame OpenCV (x right, y down, z forward);
+poses are camera-to-world 4x4; depth png is uint16 millimetres along the optical axis, 0 = none.
+PNG I/O uses OpenCV (the `mapping` extra). Every bad file gives an `IesmError` naming it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterator, Literal, Optional, Protocol
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from .errors import IesmError
+from .store.model import GridSpec, InstanceGrid
+
+FORMAT = "iesm-frames"
+VERSION = 1
+DEPTH_SCALE = 1000.0  # depth png units per metre (millimetres)
+MAX_DEPTH_M = 65.535  # largest depth a uint16 millimetre png can hold
+
+
+class Intrinsics(BaseModel):
+    """Pinhole intrinsics in pixels for (height, width) images."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    width: int = Field(gt=0)
+    height: int = Field(gt=0)
+    fx: float = Field(gt=0)
+    fy: float = Field(gt=0)
+    cx: float
+    cy: float
+
+    def matrix(self) -> np.ndarray:
+        """The 3x3 camera matrix K."""
+        return np.array([[self.fx, 0.0, self.cx], [0.0, self.fy, self.cy], [0.0, 0.0, 1.0]])
+
+
+class SceneMeta(BaseModel):
+    """scene.json: `embedding_space` names the text-embedding space of the mask embeddings
+    ("all-MiniLM-L6-v2" or "hash-384"); `categories` is the open vocabulary; `cell_size` (m) the
+    suggested top-down grid resolution."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    format: Literal["iesm-frames"] = FORMAT
+    version: Literal[1] = VERSION
+    scene_id: str = Field(min_length=1)
+    n_frames: int = Field(ge=0)
+    embedding_space: str = Field(min_length=1)
+    categories: list[str] = Field(default_factory=list)
+    cell_size: float = Field(default=0.05, gt=0)
+
+
+@dataclass
+class Segmentation:
+    """Candidate masks of one frame: `masks` (K, H, W) bool, `embeddings` (K, D) float32
+    L2-normalised, `scores` (K,) float32 mask confidence in [0, 1]."""
+
+    masks: np.ndarray
+    embeddings: np.ndarray
+    scores: np.ndarray
+
+    def __post_init__(self) -> None:
+        k = len(self.masks)
+        if self.masks.ndim != 3 or self.embeddings.ndim != 2 or self.scores.shape != (k,) \
+                or len(self.embeddings) != k:
+            raise ValueError(f"segmentation arrays disagree: masks {self.masks.shape}, "
+                             f"embeddings {self.embeddings.shape}, scores {self.scores.shape}")
+
+
+@dataclass
+class Frame:
+    """One RGB-D frame: `rgb` (H, W, 3) uint8; `depth` (H, W) float32 metres, 0 = no reading;
+    `pose` (4, 4) float64 camera-to-world; optional `segmentation` and ground-truth
+    `instance_ids` (H, W) int32 (0 = none)."""
+
+    index: int
+    rgb: np.ndarray
+    depth: np.ndarray
+    pose: np.ndarray
+    segmentation: Optional[Segmentation] = None
+    instance_ids: Optional[np.ndarray] = None
+
+
+class Segmenter(Protocol):
+    """Turns a frame into candidate masks + embeddings (a real model, or the simulator's
+    synthetic one that reads `frame.instance_ids`)."""
+
+    def segment(self, frame: Frame) -> Segmentation: ...
+
+
+def frame_stem(index: int) -> str:
+    return f"{index:06d}"
+
+
+# ---------------------------------------------------------------------------------------- writing
+
+
+def _atomic_write(path: Path, write) -> None:
+    """Call `write(tmp_path)` on a temp file beside `path`, then rename it into place."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix or ".tmp")
+    os.close(fd)
+    try:
+        write(Path(tmp))
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _write_text(path: Path, text: str) -> None:
+    _atomic_write(path, lambda p: p.write_text(text, encoding="utf-8"))
+
+
+def _write_png(path: Path, image: np.ndarray) -> None:
+    import cv2
+
+    def write(tmp: Path) -> None:
+        if not cv2.imwrite(str(tmp), image, [cv2.IMWRITE_PNG_COMPRESSION, 1]):
+            raise IesmError("could not write image", path)
+
+    _atomic_write(path, write)
+
+
+def write_frame_set(directory: str | Path, meta: SceneMeta, intrinsics: Intrinsics) -> None:
+    """Create DIR/frames and write scene.json and intrinsics.json."""
+    directory = Path(directory)
+    (directory / "frames").mkdir(parents=True, exist_ok=True)
+    _write_text(directory / "scene.json", meta.model_dump_json(indent=1))
+    _write_text(directory / "intrinsics.json", intrinsics.model_dump_json(indent=1))
+
+
+def write_frame(directory: str | Path, frame: Frame) -> None:
+    """Write one frame's files under DIR/frames (seg.npz and inst.png only when present)."""
+    import cv2
+
+    base = Path(directory) / "frames"
+    stem = frame_stem(frame.index)
+    _write_png(base / f"{stem}.rgb.png", cv2.cvtColor(np.ascontiguousarray(frame.rgb, np.uint8), cv2.COLOR_RGB2BGR))
+    depth_mm = np.rint(np.clip(frame.depth, 0.0, MAX_DEPTH_M) * DEPTH_SCALE).astype(np.uint16)
+    _write_png(base / f"{stem}.depth.png", depth_mm)
+    _write_text(base / f"{stem}.pose.txt",
+                "\n".join(" ".join(f"{v:.9g}" for v in row) for row in np.asarray(frame.pose)) + "\n")
+    if frame.segmentation is not None:
+        seg = frame.segmentation
+        _atomic_write(base / f"{stem}.seg.npz", lambda p: np.savez_compressed(
+            p, masks=seg.masks.astype(bool), embeddings=seg.embeddings.astype(np.float32),
+            scores=seg.scores.astype(np.float32)))
+    if frame.instance_ids is not None:
+        if frame.instance_ids.max(initial=0) > np.iinfo(np.uint16).max:
+            raise IesmError("instance ids above 65535 do not fit a uint16 png", base / f"{stem}.inst.png")
+        _write_png(base / f"{stem}.inst.png", frame.instance_ids.astype(np.uint16))
+
+
+# ---------------------------------------------------------------------------------------- reading
+
+
+def _load_json_model(path: Path, model: type[BaseModel]) -> BaseModel:
+    if not path.is_file():
+        raise IesmError("file is missing", path)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise IesmError(f"not readable JSON ({exc})", path) from None
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        raise IesmError(err["msg"], path, ".".join(str(p) for p in err["loc"]) or None) from None
+
+
+def _read_png(path: Path, color: bool) -> np.ndarray:
+    import cv2
+
+    if not path.is_file():
+        raise IesmError("file is missing", path)
+    image = cv2.imread(str(path), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
+    if image is None:
+        raise IesmError("not a readable image", path)
+    return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
+
+
+def _read_pose(path: Path) -> np.ndarray:
+    if not path.is_file():
+        raise IesmError("file is missing", path)
+    try:
+        rows = [line.split() for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+        pose = np.array([[float(v) for v in row] for row in rows], dtype=np.float64) \
+            if all(len(r) == 4 for r in rows) else None
+    except (OSError, UnicodeDecodeError, ValueError):
+        raise IesmError("pose must be 4 lines of 4 numbers", path) from None
+    if pose is None or pose.shape != (4, 4):
+        raise IesmError(f"pose must be a 4x4 matrix, got {len(rows)} lines of "
+                        f"{sorted({len(r) for r in rows})} numbers", path)
+    if not np.all(np.isfinite(pose)) or not np.allclose(pose[3], [0, 0, 0, 1], atol=1e-6):
+        raise IesmError("pose must be finite with last row 0 0 0 1", path)
+    return pose
+
+
+def _read_segmentation(path: Path, hw: tuple[int, int]) -> Segmentation:
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            masks, embeddings, scores = data["masks"], data["embeddings"], data["scores"]
+    except (OSError, ValueError, KeyError) as exc:
+        raise IesmError(f"not a readable segmentation npz with masks, embeddings, scores ({exc})", path) from None
+    if masks.ndim != 3 or masks.shape[1:] != hw:
+        raise IesmError(f"masks have shape {masks.shape}, frame is {hw}", path)
+    try:
+        return Segmentation(masks.astype(bool, copy=False), embeddings.astype(np.float32, copy=False),
+                            scores.astype(np.float32, copy=False))
+    except ValueError as exc:
+        raise IesmError(str(exc), path) from None
+
+
+class FrameSet:
+    """A frame directory opened for reading; `read(i)` loads frame i, iteration yields all."""
+
+    def __init__(self, directory: Path, meta: SceneMeta, intrinsics: Intrinsics):
+        self.directory = directory
+        self.meta = meta
+        self.intrinsics = intrinsics
+
+    @classmethod
+    def open(cls, directory: str | Path) -> "FrameSet":
+        directory = Path(directory)
+        if not directory.is_dir():
+            raise IesmError("not a frame directory", directory)
+        meta = _load_json_model(directory / "scene.json", SceneMeta)
+        intrinsics = _load_json_model(directory / "intrinsics.json", Intrinsics)
+        return cls(directory, meta, intrinsics)  # type: ignore[arg-type]
+
+    def __len__(self) -> int:
+        return self.meta.n_frames
+
+    def __iter__(self) -> Iterator[Frame]:
+        return (self.read(i) for i in range(len(self)))
+
+    def path(self, index: int, kind: str) -> Path:
+        """Path of one frame file; `kind` is rgb.png, depth.png, pose.txt, seg.npz or inst.png."""
+        return self.directory / "frames" / f"{frame_stem(index)}.{kind}"
+
+    def read(self, index: int) -> Frame:
+        if not 0 <= index < len(self):
+            raise IndexError(f"frame {index} out of range (0..{len(self) - 1})")
+        hw = (self.intrinsics.height, self.intrinsics.width)
+        rgb = _read_png(self.path(index, "rgb.png"), color=True)
+        depth_raw = _read_png(self.path(index, "depth.png"), color=False)
+        for path, image in ((self.path(index, "rgb.png"), rgb), (self.path(index, "depth.png"), depth_raw)):
+            if image.shape[:2] != hw:
+                raise IesmError(f"image is {image.shape[:2]}, intrinsics.json says {hw}", path)
+        if depth_raw.ndim != 2 or depth_raw.dtype != np.uint16:
+            raise IesmError("depth must be a single-channel 16-bit png in millimetres", self.path(index, "depth.png"))
+        pose = _read_pose(self.path(index, "pose.txt"))
+        seg_path, inst_path = self.path(index, "seg.npz"), self.path(index, "inst.png")
+        segmentation = _read_segmentation(seg_path, hw) if seg_path.is_file() else None
+        instance_ids = None
+        if inst_path.is_file():
+            inst = _read_png(inst_path, color=False)
+            if inst.shape != hw:
+                raise IesmError(f"instance image is {inst.shape}, frame is {hw}", inst_path)
+            instance_ids = inst.astype(np.int32)
+        return Frame(index=index, rgb=rgb, depth=depth_raw.astype(np.float32) / DEPTH_SCALE, pose=pose,
+                     segmentation=segmentation, instance_ids=instance_ids)
+
+
+# ---------------------------------------------------------------------------------------- ground truth
+
+
+@dataclass
+class GroundTruth:
+    """Simulator ground truth in DIR/gt: `objects` (dicts in the `iesm import` object format plus
+    "structural" and "on"), `rooms_list` (dicts id/label/polygon), top-down `grid`, `rooms` (H, W)
+    int32 room id (-1 none), `occupancy` (H, W) bool, `cells` the 2.5D CSR map."""
+
+    scene_id: str
+    objects: list[dict]
+    rooms_list: list[dict]
+    grid: GridSpec
+    rooms: np.ndarray
+    occupancy: np.ndarray
+    cells: InstanceGrid
+
+    @classmethod
+    def load(cls, directory: str | Path) -> "GroundTruth":
+        gt = Path(directory) / "gt"
+        if not gt.is_dir():
+            raise IesmError("no ground truth (gt/ directory) in this frame directory", directory)
+        objects_path = gt / "objects.json"
+        if not objects_path.is_file():
+            raise IesmError("file is missing", objects_path)
+        try:
+            data = json.loads(objects_path.read_text(encoding="utf-8"))
+            scene_id, objects, rooms_list = str(data["scene_id"]), list(data["objects"]), list(data.get("rooms", []))
+        except (OSError, ValueError, KeyError, TypeError) as exc:
+            raise IesmError(f"not a readable object list ({exc})", objects_path) from None
+        grid = _load_json_model(gt / "grid.json", GridSpec)
+        hw = (grid.height, grid.width)
+        layers = {}
+        for name in ("rooms", "occupancy"):
+            path = gt / f"{name}.npy"
+            try:
+                layers[name] = np.load(path, allow_pickle=False)
+            except (OSError, ValueError) as exc:
+                raise IesmError(f"not a readable .npy ({exc})", path) from None
+            if layers[name].shape != hw:
+                raise IesmError(f"shape {layers[name].shape} differs from grid.json {hw}", path)
+        cells_path = gt / "cells.npz"
+        try:
+            with np.load(cells_path, allow_pickle=False) as z:
+                cells = InstanceGrid(cells=z["cells"], indptr=z["indptr"], ids=z["ids"], top=z["top"])
+        except (OSError, ValueError, KeyError) as exc:
+            raise IesmError(f"not a readable CSR map ({exc})", cells_path) from None
+        return cls(scene_id, objects, rooms_list, grid, layers["rooms"].astype(np.int32),
+                   layers["occupancy"].astype(bool), cells)  # type: ignore[arg-type]
+
+    def save(self, directory: str | Path) -> None:
+        """Write DIR/gt/{objects.json, grid.json, rooms.npy, occupancy.npy, cells.npz}."""
+        gt = Path(directory) / "gt"
+        gt.mkdir(parents=True, exist_ok=True)
+        _write_text(gt / "objects.json", json.dumps(
+            {"scene_id": self.scene_id, "rooms": self.rooms_list, "objects": self.objects}, indent=1))
+        _write_text(gt / "grid.json", self.grid.model_dump_json(indent=1))
+        _atomic_write(gt / "rooms.npy", lambda p: np.save(p, self.rooms.astype(np.int32)))
+        _atomic_write(gt / "occupancy.npy", lambda p: np.save(p, self.occupancy.astype(bool)))
+        c = self.cells
+        _atomic_write(gt / "cells.npz", lambda p: np.savez_compressed(
+            p, cells=c.cells, indptr=c.indptr, ids=c.ids, top=c.top))
