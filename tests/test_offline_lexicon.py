@@ -3,7 +3,7 @@
 import pytest
 
 from iesm_agent.lexicon import load_lexicon
-from iesm_agent.providers.offline.analysis import analyse_query, label_concepts, room_of
+from iesm_agent.understanding import analyse_query, label_concepts, room_of
 
 
 @pytest.mark.parametrize("label,head", [

@@ -7,7 +7,7 @@ import tomllib
 
 import pytest
 
-from iesm_agent.providers.offline.analysis import analyse_query, text_slots
+from iesm_agent.understanding import analyse_query, text_slots
 from iesm_agent.resources import resource_dir
 
 EXPERTS = {s["name"]: s for s in (tomllib.loads(p.read_text())

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..lexicon import load_lexicon
-from ..providers.offline.analysis import analyse_query, label_concepts
+from ..understanding import analyse_query, label_concepts
 
 #: alternative labels (the mapper's runner-up categories) count this much
 _ALT_WEIGHT = 0.5

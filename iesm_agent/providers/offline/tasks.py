@@ -7,7 +7,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ...lexicon import load_lexicon
-from .analysis import QueryInfo, Record, Slot, analyse_query, candidate_from_line, stem
+from ...understanding import QueryInfo, Record, Slot, analyse_query, candidate_from_line, stem
 from .prompt import Prompt, focus_role
 
 #: component weights per expert role: label, room, description, affordance, text overlap, embedding

@@ -1,0 +1,74 @@
+"""Words the lexicon does not know, grounded in the map: a target or room phrase that matches
+no lexicon entry ("the gizmo", "in the scullery") is mapped with the sentence encoder to the
+nearest label or room present among the candidates."""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from .labels import label_concepts
+from .query import QueryInfo
+
+#: cosine similarity (all-MiniLM-L6-v2) a map label or room must reach to stand for an unknown phrase
+MIN_SIMILARITY = 0.45
+_CACHE_SIZE = 4096
+_grounded: dict[tuple, QueryInfo] = {}
+_vectors: dict[tuple[str, str], np.ndarray] = {}
+
+
+def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], encoder: Any) -> QueryInfo:
+    """`info` with its unknown target phrase read as the categories of the nearest map label and
+    its unknown room phrase as the nearest map room (cosine >= MIN_SIMILARITY); `info` itself
+    when there is nothing to ground, no encoder, or nothing near enough. `rooms`/`labels` are
+    the room and label strings present (as the candidates carry them)."""
+    if encoder is None or not (info.unknown_target or info.unknown_room):
+        return info
+    rooms, labels = tuple(sorted(set(rooms))), tuple(sorted(set(labels)))
+    key = (info.text, rooms, labels, encoder.name)
+    hit = _grounded.get(key)
+    if hit is not None:
+        return hit
+    targets, found_rooms = dict(info.targets), dict(info.rooms)
+    if info.unknown_target:
+        label, sim = _nearest(encoder, info.unknown_target, labels)
+        if label is not None:
+            concepts = label_concepts(label)
+            top = concepts[0][1] if concepts else 0.0
+            targets.update({c: 1.0 for c, w in concepts if w >= top})
+    if info.unknown_room:
+        room, _ = _nearest(encoder, info.unknown_room, rooms)
+        if room is not None:
+            found_rooms[room] = 1.0
+    grounded = info
+    if targets != info.targets or found_rooms != info.rooms:
+        grounded = dataclasses.replace(info, targets=targets, rooms=found_rooms, memo={},
+                                       target_phrase=info.target_phrase or info.unknown_target,
+                                       room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
+    if len(_grounded) >= _CACHE_SIZE:
+        _grounded.clear()
+    _grounded[key] = grounded
+    return grounded
+
+
+def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> tuple[str | None, float]:
+    """The option nearest to `phrase` and its cosine, or (None, best cosine) below the bar."""
+    if not options:
+        return None, 0.0
+    sims = _encode(encoder, options) @ _encode(encoder, [phrase])[0]
+    best = int(np.argmax(sims))
+    return (options[best] if sims[best] >= MIN_SIMILARITY else None), float(sims[best])
+
+
+def _encode(encoder: Any, texts: Sequence[str]) -> np.ndarray:
+    """(N, D) unit vectors of `texts`, each encoded once per encoder."""
+    missing = [t for t in dict.fromkeys(texts) if (encoder.name, t) not in _vectors]
+    if missing:
+        if len(_vectors) > 50_000:
+            _vectors.clear()
+        for text, vec in zip(missing, encoder.encode(missing)):
+            _vectors[encoder.name, text] = vec
+    return np.stack([_vectors[encoder.name, t] for t in texts])

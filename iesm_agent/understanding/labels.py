@@ -1,0 +1,193 @@
+"""What raw map labels, room labels and candidate records denote: 'cabinet kitchen' ->
+cabinet, 'Living Room 2' -> living room, a fenced candidate line -> its lexical profile."""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from .text import Slot, modifier_spans, read_slots, word_stems
+
+_SECONDARY_WEIGHT = 0.6
+#: weight of a category only an alternative label names (the first; each later one 0.05 less)
+_ALT_WEIGHT = 0.6
+
+
+@dataclass(frozen=True)
+class Record:
+    """A candidate's lexical profile, built from whatever fields it has."""
+
+    concepts: tuple[tuple[str, float], ...]  # (category, weight), best first
+    room: str | None
+    attrs: frozenset[tuple[str, str]]
+    words: frozenset[str]        # lemmas of label, caption and tags
+    label_words: frozenset[str]  # lemmas of the label
+    text: str                    # label and caption, for sentence embeddings
+    slots: tuple[Slot, ...] = ()  # attributes as written in label, caption and tags
+    stems: frozenset[str] = frozenset()  # word stems of label, caption and tags
+
+
+@lru_cache(maxsize=65536)
+def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
+    """Categories a raw map label denotes, with weights: 'cabinet kitchen' -> cabinet,
+    'stand/small table' -> stand and side table, 'set of towels' -> towel, 'mirror frame' -> mirror 1.0 + frame."""
+    lex = load_lexicon()
+    out: dict[str, float] = {}
+    whole = [v for k, v in lex.phrase(label) if k == "cat"]
+    for c in whole:
+        out[c] = 1.0
+    for part in label.replace("\\", "/").split("/"):
+        for concept, w in _part_concepts(lex, part).items():
+            out[concept] = max(out.get(concept, 0.0), w)
+    return tuple(sorted(out.items(), key=lambda kv: (-kv[1], kv[0])))
+
+
+def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
+    words = [lex.lemma(t) for t in lex.tokens(part) if t not in lex.words["skip"]]
+    words = [w for w in words if w not in lex.words["ignore"]]
+    if not words:
+        return {}
+    # "set of towels" -> towels; "box of paper" -> box (+ paper); "bowl with sweets" -> bowl
+    for joiner in ("of", "with", "for", "on", "in", "and"):
+        if joiner in words[1:-1]:
+            i = words.index(joiner)
+            left, right = words[:i], words[i + 1:]
+            if joiner == "of" and left[-1] in lex.words["collective_strict"]:
+                return _phrase_concepts(lex, right)
+            if joiner == "of" and left[-1] in lex.words["weak_heads"]:
+                return _phrase_concepts(lex, right)
+            main = _phrase_concepts(lex, left)
+            for c, w in _phrase_concepts(lex, right).items():
+                main.setdefault(c, w * _SECONDARY_WEIGHT)
+            return main or _phrase_concepts(lex, right)
+    return _phrase_concepts(lex, words)
+
+
+def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
+    whole = [v for k, v in lex.phrases.get(tuple(words), ()) if k == "cat"]
+    if whole:
+        return {c: 1.0 for c in whole}
+    # drop room modifiers ("cabinet kitchen", "bath sink") when something else remains
+    core = [w for w in words if w not in lex.words["room_modifiers"]] or words
+    spans = [s for s in lex.scan(core) if s.has("cat")]
+    if not spans:
+        return {}
+    head = spans[-1]
+    if len(spans) > 1 and core[head.start] in lex.words["weak_heads"] and head.end - head.start == 1:
+        head = spans[-2]  # "mirror frame" -> mirror
+    out: dict[str, float] = {}
+    for s in spans:
+        for c in s.values("cat"):
+            w = 1.0 if s is head else _SECONDARY_WEIGHT
+            out[c] = max(out.get(c, 0.0), w)
+    return out
+
+
+def _text_attrs(lex: Lexicon, text: str) -> tuple[set[tuple[str, str]], set[str]]:
+    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
+    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
+    return attrs, set(lemmas)
+
+
+@lru_cache(maxsize=65536)
+def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[str]]:
+    attrs, words = _text_attrs(load_lexicon(), text)
+    return frozenset(attrs), frozenset(words)
+
+
+_CHUNK = re.compile(r"[,;:.()/|!?]+")
+
+
+@lru_cache(maxsize=65536)
+def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
+    """Attribute slots and word stems of a caption, tag value or label. Punctuation separates
+    ("white, red" is two colours); words next to each other may form a compound ("blue-gray")."""
+    lex = load_lexicon()
+    slots: list[Slot] = []
+    stems: set[str] = set()
+    for chunk in _CHUNK.split(text):
+        lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
+        if not lemmas:
+            continue
+        stems.update(word_stems(lex, lemmas))
+        spans: list[Span] = []
+        for sp in lex.scan(lemmas):
+            if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds):
+                spans.append(sp)
+            else:
+                spans.extend(modifier_spans(lex, lemmas, sp))
+        slots.extend(read_slots(lex, lemmas, spans)[0])
+    return tuple(dict.fromkeys(slots)), frozenset(stems)
+
+
+@lru_cache(maxsize=4096)
+def room_of(text: str) -> str | None:
+    """Canonical room type of a room label such as 'Living Room 2' or 'office1'."""
+    lex = load_lexicon()
+    lemmas = [lex.lemma(t.rstrip("0123456789")) for t in lex.tokens(text)]
+    for s in lex.scan([t for t in lemmas if t]):
+        rooms = s.values("room")
+        if rooms:
+            return rooms[0]
+    return text.strip().lower() or None
+
+
+@lru_cache(maxsize=65536)
+def candidate_from_line(line: str) -> tuple[int, Record] | None:
+    """(id, profile) of one fenced candidate line (JSON object with id, label, alt_labels,
+    room, caption, tags; all but id optional); None if the line is unusable."""
+    try:
+        data = json.loads(line)
+    except ValueError:
+        return None
+    if not isinstance(data, dict):
+        return None
+    ident = data.get("id")
+    if isinstance(ident, str) and ident.strip().lstrip("-").isdigit():
+        ident = int(ident)
+    if not isinstance(ident, int) or isinstance(ident, bool):
+        return None
+    return ident, _record(data)
+
+
+def _record(data: dict) -> Record:
+    label = _as_text(data.get("label"))
+    concepts = dict(label_concepts(label)) if label else {}
+    label_words = set(_caption_profile(label)[1]) if label else set()
+    alts = data.get("alt_labels")
+    # alternative labels are the mapper's runner-up guesses: weak evidence, best first
+    for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
+        for c, w in label_concepts(_as_text(alt)):
+            concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
+    room = room_of(_as_text(data.get("room"))) if data.get("room") else None
+    caption = _as_text(data.get("caption"))
+    text_parts = [label, caption]
+    tags = data.get("tags")
+    if isinstance(tags, dict):
+        text_parts += [_as_text(v) for v in tags.values()]
+    attrs: set[tuple[str, str]] = set()
+    words: set[str] = set()
+    slots: dict[Slot, None] = {}
+    stems: set[str] = set()
+    for part in text_parts:
+        if part:
+            a, w = _caption_profile(part)
+            attrs |= a
+            words |= w
+            sl, st = text_slots(part)
+            slots.update(dict.fromkeys(sl))
+            stems |= st
+    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), room=room,
+                  attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
+                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems))
+
+
+def _as_text(value) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, (list, tuple)):
+        return ", ".join(_as_text(v) for v in value)
+    return str(value)

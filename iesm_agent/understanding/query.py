@@ -1,0 +1,200 @@
+"""What a query asks for: target categories, rooms, attributes and functional intent, read
+with the shipped lexicon. Every provider and the candidate selection rely on this reading."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from .text import Slot, modifier_spans, read_slots, stem
+
+#: category values that name nothing in particular ("object", "unknown", "clutter")
+_UNSPECIFIC = frozenset({"object"})
+#: weight of a category named outside the target phrase ("... to put my cup on")
+_THEME_WEIGHT = 0.35
+
+
+@dataclass
+class QueryInfo:
+    """What a query asks for. Weights are in (0, 1]."""
+
+    text: str
+    targets: dict[str, float] = field(default_factory=dict)   # named categories (1.0 head, 0.35 theme)
+    target_phrase: str | None = None                          # the head's words, as written
+    generic: str | None = None                                # class noun used as target ("seating")
+    rooms: dict[str, float] = field(default_factory=dict)     # canonical room -> 1.0 explicit, 0.5 implied
+    room_phrase: str | None = None
+    attrs: list[tuple[str, str]] = field(default_factory=list)  # (kind, canonical value)
+    extra: frozenset[str] = frozenset()                       # other content lemmas
+    afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
+    abstract: bool = False                                    # "something", "a place to ..."
+    head_words: frozenset[str] = frozenset()                  # lemmas of the target phrase
+    slots: tuple[Slot, ...] = ()                              # attributes as written (surface + family)
+    overlap: frozenset[str] = frozenset()                     # stems of extra and attribute words
+    unknown_target: str | None = None     # target words the lexicon does not know ("the gizmo")
+    unknown_room: str | None = None       # place words after "in" the lexicon does not know
+    memo: dict = field(default_factory=dict, repr=False, compare=False)  # scorer's per-query cache
+
+    @property
+    def named(self) -> bool:
+        """True when the query names a specific category as its target."""
+        return any(w >= 1.0 for w in self.targets.values())
+
+
+
+def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
+    changed = True
+    while changed and tokens:
+        changed = False
+        for cmd in lex.commands:
+            if tuple(tokens[:len(cmd)]) == cmd and len(tokens) > len(cmd):
+                tokens = tokens[len(cmd):]
+                changed = True
+                break
+    return tokens
+
+
+def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float) -> None:
+    for concept, w in weights.items():
+        target[concept] = target.get(concept, 0.0) + w * scale
+
+
+@lru_cache(maxsize=4096)
+def analyse_query(text: str) -> QueryInfo:
+    """Targets, rooms, attributes and functional intent of a natural-language query."""
+    lex = load_lexicon()
+    skip, bounds = lex.words["skip"], lex.words["boundaries"]
+    surface = [t for t in _strip_command(lex, lex.tokens(text)) if t not in skip]
+    lemmas = [lex.lemma(t) for t in surface]
+    spans = lex.scan(lemmas)
+    info = QueryInfo(text=text)
+
+    # the target noun phrase ends at the first boundary word (relative clause, landmark, room)
+    inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
+    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
+    if lemmas and lemmas[0] in bounds:
+        end = 0
+    covered: set[int] = set()
+    for s in spans:
+        covered.update(range(s.start, s.end))
+    head = _head_span(spans, end, lemmas, lex.words["abstract"])
+    if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
+        end, head = head.start, None  # "something (that) gives light": light is what it does
+    info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
+    afford: dict[str, float] = {}
+    landmark_words: set[str] = set()
+    attr_spans: list[Span] = []
+    cue_covered: set[int] = set()
+    for s in spans:
+        if s.has("cue"):
+            cue_covered.update(range(s.start, s.end))
+
+    for s in spans:
+        in_target = s.end <= end
+        if s is head:
+            info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
+            info.target_phrase = " ".join(surface[s.start:s.end])
+            info.head_words = frozenset(lemmas[s.start:s.end])
+            attr_spans.extend(modifier_spans(lex, lemmas, s))
+            _implied_rooms(lex, lemmas[s.start:s.end], info)
+            continue
+        if s.has("gen") and in_target:
+            info.generic = s.values("gen")[0]
+            info.target_phrase = " ".join(surface[s.start:s.end])
+            _add_entry(afford, lex.generic[info.generic], 1.0)
+            continue
+        if s.has("room") and not (in_target and s.has("cat")):
+            for r in s.values("room"):
+                info.rooms[r] = 1.0
+            info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
+            continue
+        attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
+        info.attrs.extend(kv for kv in attr if kv not in info.attrs)
+        if attr:
+            attr_spans.append(s)
+        if attr and not s.has("cue"):
+            continue
+        if s.has("cue"):
+            scale = 1.0 if s.end - s.start > 1 else 0.8
+            for idx in s.values("cue"):
+                _add_entry(afford, lex.affordances[int(idx)], scale)
+        if s.has("cat") and not in_target:
+            for c in s.values("cat"):
+                if c not in _UNSPECIFIC:
+                    info.targets.setdefault(c, _THEME_WEIGHT)
+            # a landmark ("the lamp next to the bed"): captions that mention it are evidence
+            landmark_words.update(lemmas[s.start:s.end])
+        elif s.has("gen"):
+            _add_entry(afford, lex.generic[s.values("gen")[0]], 0.8)
+
+    for positions, idx in lex.gapped_cues(lemmas):
+        if not cue_covered.intersection(positions):  # a contiguous cue already read these words
+            _add_entry(afford, lex.affordances[int(idx)], 0.8)
+            covered.update(positions)
+    if afford:
+        top = max(afford.values())
+        info.afford = {c: w / top for c, w in afford.items()}
+    slots, used = read_slots(lex, lemmas, attr_spans)
+    info.slots = tuple(dict.fromkeys(slots))
+    stop = skip | bounds | lex.words["abstract"] | lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
+    info.extra = frozenset(t for i, t in enumerate(lemmas)
+                           if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
+    words = set(info.extra) | landmark_words
+    for slot in info.slots:
+        words.update(slot.base.split())
+    info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
+    if not info.named and info.generic is None and not info.afford:
+        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, end, whole=False)
+    if not any(w >= 1.0 for w in info.rooms.values()):
+        place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
+        if place is not None:
+            stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
+            info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
+    return info
+
+
+#: prepositions that introduce the room an object is in ("the sink in the scullery")
+_PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
+
+
+def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: frozenset[str],
+                 start: int, end: int, *, whole: bool) -> str | None:
+    """The content words of `start:end` that no lexicon phrase covers, as written; None when
+    there are none, or (`whole`) when any word of the span is a lexicon phrase."""
+    if start >= end or (whole and any(i in known for i in range(start, end))):
+        return None
+    words = [surface[i] for i in range(start, end)
+             if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()]
+    return " ".join(words) or None
+
+
+def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
+    """Rightmost specific category span inside the target phrase. A word that is also an
+    attribute and stands before an abstract noun modifies it ("the glass object": glass is the
+    material, not a drinking glass)."""
+    head = None
+    for s in spans:
+        if s.end > end:
+            break
+        cats = [c for c in s.values("cat") if c not in _UNSPECIFIC]
+        modifier = (any(k in ATTRIBUTE_KINDS for k, _ in s.kinds) and s.end < len(lemmas)
+                    and lemmas[s.end] in abstract)
+        if cats and not s.has("gen") and not modifier:
+            head = s
+    return head
+
+
+def _after_abstract_clause(lex: Lexicon, lemmas: list[str], covered: set[int], start: int) -> bool:
+    """An abstract noun comes before `start` with an unknown (verb-like) word in between."""
+    marks = [i for i in range(start) if lemmas[i] in lex.words["abstract"]]
+    return bool(marks) and any(i not in covered for i in range(marks[0] + 1, start))
+
+
+def _implied_rooms(lex: Lexicon, words: list[str], info: QueryInfo) -> None:
+    for w in words:
+        for kind, value in lex.phrases.get((w,), ()):
+            if kind == "room":
+                info.rooms.setdefault(value, 0.5)
+
+

@@ -1,0 +1,108 @@
+"""Attribute slots and word stems: how described attributes are read, the same way in queries
+and in instance labels, captions and tags."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
+
+
+@dataclass(frozen=True)
+class Slot:
+    """One described attribute as written: `surface` keeps the words ("pale blue gray",
+    "leather like", "mesh"), `base` drops shade words ("blue gray"), `values` are the canonical
+    families ({"blue", "gray"}; empty for a colour the lexicon does not know, e.g. "ash colored")."""
+
+    kind: str
+    surface: str
+    base: str
+    values: frozenset[str]
+
+
+def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
+    """Stems of words and of the parts of hyphenated words; imitation words read as "like"."""
+    out: set[str] = set()
+    imitation = lex.words["imitation_suffixes"]
+    for w in lemmas:
+        for part in (w, *w.split("-")) if "-" in w else (w,):
+            if part in imitation:
+                part = "like"
+            if len(part) > 2:
+                out.add(stem(part))
+    return out
+
+
+def stem(word: str) -> str:
+    """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
+    w = word
+    if len(w) > 5 and w.endswith("ing"):
+        w = w[:-3]
+    elif len(w) > 4 and w.endswith(("ed", "es")):
+        w = w[:-2]
+    elif len(w) > 3 and w.endswith("s") and not w.endswith("ss"):
+        w = w[:-1]
+    if len(w) > 4 and w.endswith("y"):
+        w = w[:-1]
+    if len(w) > 3 and w.endswith("e"):
+        w = w[:-1]
+    if len(w) > 3 and w[-1] == w[-2]:
+        w = w[:-1]
+    return w
+
+
+def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
+    """(surface, base) of an attribute's words: hyphens and colour suffixes dropped, imitation
+    words ("look", "faux", "like") folded into one trailing "like", shades dropped from base."""
+    parts = [p for w in words for p in w.split("-") if p]
+    imitation = any(p in lex.words["imitation_suffixes"] for p in parts)
+    core = [p for p in parts if p not in lex.words["imitation_suffixes"] and p not in lex.words["color_suffixes"]]
+    base = [p for p in core if p not in lex.shades] or core
+    tail = ["like"] if imitation else []
+    return " ".join(core + tail), " ".join(base + tail)
+
+
+def modifier_spans(lex: Lexicon, lemmas: list[str], span: Span) -> list[Span]:
+    """Attribute words inside a multi-word category phrase, as one-word spans: a modifier there
+    is also a description ("mesh chair": mesh; "small table": small)."""
+    out = []
+    for k in range(span.start, span.end) if span.end - span.start > 1 else ():
+        kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
+        if kinds:
+            out.append(Span(k, k + 1, kinds))
+    return out
+
+
+def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[list[Slot], set[int]]:
+    """Attribute slots from attribute spans over one run of adjacent words: adjacent colour spans
+    form one compound colour ("golden brown", "blue gray"); an unknown word before a colour suffix
+    is a colour ("ash-colored"); a suffix after a span joins it ("leather look")."""
+    slots: list[Slot] = []
+    used: set[int] = set()
+    suffixes = lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
+    groups: list[list[Span]] = []
+    for s in attr_spans:
+        if groups and s.start == groups[-1][-1].end and s.has("color") and groups[-1][-1].has("color"):
+            groups[-1].append(s)
+        else:
+            groups.append([s])
+    span_idx = {i for s in attr_spans for i in range(s.start, s.end)}
+    for group in groups:
+        start, end = group[0].start, group[-1].end
+        while end < len(lemmas) and lemmas[end] in suffixes:
+            end += 1
+        used.update(range(start, end))
+        kinds = {k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}
+        for kind in sorted(kinds):
+            values = frozenset(v for s in group for k, v in s.kinds if k == kind)
+            words = lemmas[start:end] if kind == "color" or len(group) == 1 else lemmas[group[0].start:group[0].end]
+            surface, base = _norm_surface(lex, words)
+            slots.append(Slot(kind, surface, base, values))
+    for i in range(len(lemmas) - 1):
+        if (lemmas[i + 1] in lex.words["color_suffixes"] and i not in span_idx and i not in used
+                and lemmas[i].isalpha() and len(lemmas[i]) > 2 and lemmas[i] not in lex.shades):
+            slots.append(Slot("color", lemmas[i], lemmas[i], frozenset()))
+            used.update((i, i + 1))
+    return slots, used
+
+
