@@ -1,0 +1,180 @@
+"""The MCP server over a `MapService` (official `mcp` SDK, 2.x `MCPServer` API).
+
+Tools are `MapService.tools()`; each served map is also a JSON resource `iesm://maps/<name>`.
+A tool's listed input schema is the one `tool_specs()` gives (the same for `iesm tools` and
+`MapStore.tool_specs()`); the SDK validates arguments against a pydantic model of the same
+signature, so a wrong argument type is a tool error naming the argument. `IesmError`s (unknown
+map or instance, over-long query) become tool errors carrying their message.
+
+Transports: stdio (protocol only on stdout; logs go to stderr) and streamable HTTP at `/mcp`,
+with DNS-rebinding protection and, when a token is given, `Authorization: Bearer <token>`
+required on every request (401 otherwise).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import hmac
+import json
+import logging
+import socket
+import sys
+from typing import Any, Callable
+
+from mcp.server.auth.provider import AccessToken
+from mcp.server.auth.settings import AuthSettings
+from mcp.server.mcpserver import MCPServer
+from mcp.server.mcpserver.exceptions import ToolError
+from mcp.server.mcpserver.tools import Tool
+from mcp.server.transport_security import TransportSecuritySettings
+
+from .. import __version__
+from ..errors import IesmError
+from ..store.tools import function_schema
+from .tools import MapService
+
+MCP_PATH = "/mcp"
+LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1")
+_INSTRUCTIONS = ("Goal retrieval over instance-enriched semantic maps: call find_goal with the user's sentence "
+                 "to get the map instance it refers to; the other tools browse a map's rooms and instances.")
+
+
+class StaticTokenVerifier:
+    """Accepts exactly one bearer token (compared in constant time)."""
+
+    def __init__(self, token: str):
+        self._token = token.encode()
+
+    async def verify_token(self, token: str) -> AccessToken | None:
+        if hmac.compare_digest(token.encode(), self._token):
+            return AccessToken(token=token, client_id="iesm", scopes=[])
+        return None
+
+
+def _as_mcp_tool(fn: Callable[..., Any]) -> Tool:
+    """An SDK `Tool` for `fn`: the result as one JSON text block, `IesmError` -> `ToolError`, the
+    listed schema from `function_schema`."""
+
+    @functools.wraps(fn)
+    async def call(**arguments: Any) -> str:
+        try:
+            result = await fn(**arguments)
+        except IesmError as exc:
+            raise ToolError(str(exc)) from exc
+        return json.dumps(result, indent=1)  # one text block, also for lists
+
+    spec = function_schema(fn)
+    tool = Tool.from_function(call, name=spec["name"], description=spec["description"], structured_output=False)
+    return tool.model_copy(update={"parameters": spec["parameters"]})
+
+
+def build_server(service: MapService, token: str | None = None) -> MCPServer:
+    """An `MCPServer` serving `service`'s tools and maps; `token` turns on bearer auth (HTTP)."""
+    auth: dict[str, Any] = {}
+    if token:
+        # The SDK's bearer middleware needs AuthSettings; this server is its own issuer.
+        auth = {"auth": AuthSettings(issuer_url="http://127.0.0.1", resource_server_url=None),
+                "token_verifier": StaticTokenVerifier(token)}
+    server = MCPServer("iesm-agent", version=__version__, instructions=_INSTRUCTIONS, log_level="WARNING",
+                       tools=[_as_mcp_tool(fn) for fn in service.tools()], **auth)
+    for name in service.maps:
+        server.resource(f"iesm://maps/{name}", name=name, mime_type="application/json",
+                        description=f"map {name}: rooms, categories and every instance in brief")(
+            _map_reader(service, name))
+    return server
+
+
+def _map_reader(service: MapService, name: str) -> Callable[[], Any]:
+    async def read() -> str:
+        return json.dumps(service.map_summary(name))
+    return read
+
+
+def transport_security(host: str, extra_hosts: tuple[str, ...] = ()) -> TransportSecuritySettings:
+    """DNS-rebinding protection: Host must be a loopback name, `host` (unless a wildcard address)
+    or one of `extra_hosts`, on any port; Origin, when sent, the same over http(s)."""
+    names = list(LOOPBACK_HOSTS) + [h for h in (host, *extra_hosts) if h not in ("0.0.0.0", "::", "")]
+    names = list(dict.fromkeys(f"[{n}]" if ":" in n else n for n in names))
+    return TransportSecuritySettings(
+        enable_dns_rebinding_protection=True, allowed_hosts=[f"{n}:*" for n in names] + names,
+        allowed_origins=[f"{scheme}://{n}:*" for n in names for scheme in ("http", "https")])
+
+
+def http_app(server: MCPServer, host: str, extra_hosts: tuple[str, ...] = ()):
+    """The Starlette app: streamable HTTP at `/mcp` (JSON responses, per-client sessions)."""
+    return server.streamable_http_app(streamable_http_path=MCP_PATH, json_response=True,
+                                      transport_security=transport_security(host, extra_hosts), host=host)
+
+
+def bind(host: str, port: int) -> socket.socket:
+    """A listening TCP socket on (host, port); port 0 picks a free one."""
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((host, port))
+    except OSError as exc:
+        sock.close()
+        raise IesmError(f"cannot listen on {host}:{port}: {exc.strerror or exc}", None, "--http") from None
+    sock.listen(128)
+    return sock
+
+
+def uvicorn_server(app, log_level: str = "warning"):
+    """A uvicorn server for `app` (logs to stderr); run it with `await s.serve(sockets=[bind(...)])`."""
+    import uvicorn
+
+    config = uvicorn.Config(app, log_level=log_level, access_log=False, lifespan="on")
+    return uvicorn.Server(config)
+
+
+def quiet_sdk_logging() -> None:
+    """SDK loggers to stderr at WARNING (stdout carries only protocol on stdio)."""
+    handler = logging.StreamHandler()  # stderr
+    for name in ("mcp", "uvicorn"):
+        logger = logging.getLogger(name)
+        logger.handlers[:] = [handler]
+        logger.setLevel(logging.WARNING)
+        logger.propagate = False
+
+
+def parse_listen(spec: str) -> tuple[str, int]:
+    """(host, port) from "HOST:PORT", "[::1]:PORT", ":PORT" or "PORT" (host defaults to 127.0.0.1)."""
+    host, sep, port = spec.strip().rpartition(":")
+    if not sep:
+        host, port = "", spec.strip()
+    host = host.strip("[]") or "127.0.0.1"
+    if not port.isdigit() or not 0 <= int(port) <= 65535:
+        raise IesmError(f"expected HOST:PORT, got {spec!r}", None, "--http")
+    return host, int(port)
+
+
+async def serve_stdio(service: MapService) -> None:
+    """Warm the service up, then speak MCP on stdin/stdout until stdin closes."""
+    quiet_sdk_logging()
+    with contextlib.redirect_stdout(sys.stderr):  # nothing but protocol on stdout
+        await service.warm_up()
+    try:
+        await build_server(service).run_stdio_async()
+    finally:
+        await service.aclose()
+
+
+async def serve_http(service: MapService, host: str, port: int, token: str | None,
+                     extra_hosts: tuple[str, ...] = ()) -> None:
+    """Warm the service up, then serve streamable HTTP on host:port until interrupted."""
+    quiet_sdk_logging()
+    sock = bind(host, port)
+    await service.warm_up()
+    server = uvicorn_server(http_app(build_server(service, token), host, extra_hosts))
+    bound = sock.getsockname()
+    shown = f"[{bound[0]}]" if ":" in bound[0] else bound[0]
+    print(f"iesm serve: MCP on http://{shown}:{bound[1]}{MCP_PATH} ({', '.join(service.maps)}; "
+          f"{'bearer token required' if token else 'no token: set IESM_TOKEN to require one'})",
+          file=sys.stderr, flush=True)
+    try:
+        await server.serve(sockets=[sock])
+    finally:
+        sock.close()
+        await service.aclose()

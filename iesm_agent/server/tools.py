@@ -1,0 +1,196 @@
+"""The assistant-facing tools over a set of served maps, defined once.
+
+`MapService.tools()` is the single definition behind every surface: the MCP server registers
+these functions, `iesm tools` prints `tool_specs()` of them, and each store tool is generated from
+the `MapStore` method of the same name (`mapstore.TOOLS`, so store tools added there appear here
+without edits) with one extra optional `map` argument. Schemas come from `store.tools.function_schema`,
+the function behind `MapStore.tool_specs()`.
+
+All tools are coroutines run on the server's event loop: the maps, the retrievers and their
+caches are only ever touched from that one thread, so concurrent calls need no locks; a remote
+model's I/O still overlaps because `Retriever.aask` awaits it.
+"""
+
+from __future__ import annotations
+
+import inspect
+import typing
+from typing import Any, Callable, Literal, Optional
+
+from ..errors import IesmError
+from ..store import MapStore
+from ..store import mapstore as mapstore_module
+from ..store.tools import function_schema
+
+#: longest query find_goal accepts, in characters
+MAX_QUERY_CHARS = 2000
+#: ids of the top of the fused ranking find_goal reports
+RANKING_SHOWN = 5
+SPEC_FORMATS = ("json", "openai", "mcp")
+_MAP_ARG_DOC = "\n\nArgs:\n    map: the served map's name (scene id; default: the first map)"
+
+
+class MapService:
+    """The served maps and the warm retrievers over them.
+
+    `maps` maps a name (the map's scene id) to its `MapStore`; the first is the default.
+    `providers` lists the model specs callers may pick (the first is the default): a caller
+    cannot make the server spend another endpoint's credentials."""
+
+    def __init__(self, maps: dict[str, MapStore] | None = None, providers: tuple[str, ...] = ("offline",)):
+        if not providers:
+            raise IesmError("at least one provider is required", None, "providers")
+        self.maps = dict(maps or {})
+        self.providers = tuple(providers)
+        self._retrievers: dict[tuple[str, str, str], Any] = {}
+
+    @classmethod
+    def open(cls, refs: list[str], providers: tuple[str, ...] = ("offline",)) -> "MapService":
+        """Load the maps `refs` name (`.iesm` files, importable JSON or shipped names)."""
+        from ..store import open_map
+
+        maps: dict[str, MapStore] = {}
+        for ref in refs:
+            store = MapStore(open_map(ref))
+            name = store.scene.scene_id
+            if name in maps:
+                raise IesmError(f"two maps share the scene id {name!r}", ref)
+            maps[name] = store
+        return cls(maps, providers)
+
+    # ------------------------------------------------------------------ state
+    def store(self, map: Optional[str] = None) -> MapStore:
+        """The `MapStore` named `map` (None: the first served map)."""
+        if not self.maps:
+            raise IesmError("no map is served", None, "map")
+        if map is None or map == "":
+            return next(iter(self.maps.values()))
+        try:
+            return self.maps[map]
+        except KeyError:
+            raise IesmError(f"unknown map {map!r}; served: {', '.join(self.maps)}", None, "map") from None
+
+    def retriever(self, map: Optional[str], method: str, provider: Optional[str]):
+        """The warm `Retriever` for (map, method, provider), built on first use and kept."""
+        from ..retrieval import Retriever
+
+        store = self.store(map)
+        provider = provider or self.providers[0]
+        if provider not in self.providers:
+            raise IesmError(f"provider {provider!r} is not enabled on this server; enabled: "
+                            f"{', '.join(self.providers)}", None, "provider")
+        key = (store.scene.scene_id, method.strip(), provider)
+        if key not in self._retrievers:
+            self._retrievers[key] = Retriever(store, provider=provider, method=method,
+                                              cache=False if provider == "offline" else None)
+        return self._retrievers[key]
+
+    async def warm_up(self) -> None:
+        """Load the embedding model (when installed) and answer one query per map, so that the
+        first caller pays no start-up cost."""
+        from ..embeddings import get_encoder
+
+        get_encoder()
+        for name in self.maps:
+            await self.find_goal("the chair", map=name)
+
+    async def aclose(self) -> None:
+        """Close the retrievers' model connections."""
+        for retriever in self._retrievers.values():
+            await retriever.aclose()
+        self._retrievers.clear()
+
+    # ------------------------------------------------------------------ tools
+    async def find_goal(self, query: str, map: Optional[str] = None, method: str = "mtefr",
+                        provider: Optional[str] = None) -> dict:
+        """Find the map instance a sentence refers to (MTEFR), with the evidence in short.
+
+        Returns the instance id, label, room and caption, the gate weights, each expert's
+        top picks and the head of the fused ranking.
+
+        Args:
+            query: the sentence naming the goal object, e.g. "the red chair in the office"
+            map: the served map's name (scene id; default: the first map)
+            method: mtefr, spr, keyword or experts:<name>,<name>
+            provider: model spec (default: the server's first enabled provider)
+        """
+        if not query.strip():
+            raise IesmError("the query is empty", None, "query")
+        if len(query) > MAX_QUERY_CHARS:
+            raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
+                            None, "query")
+        retriever = self.retriever(map, method, provider)
+        res = await retriever.aask(query)
+        failed_calls = [c for c in res.calls if c.error]
+        if res.calls and len(failed_calls) == len(res.calls):
+            raise IesmError(f"all {len(res.calls)} model calls failed; the first: {failed_calls[0].error}",
+                            provider or self.providers[0], "provider")
+        name = res.names.get
+        return {
+            "map": retriever.store.scene.scene_id, "query": res.query, "method": res.method,
+            "found": res.instance_id is not None, "instance_id": res.instance_id, "label": res.label,
+            "room": res.room, "caption": res.caption,
+            "gate": {e: round(w, 3) for e, w in sorted(res.gate.items(), key=lambda kv: -kv[1])},
+            "experts": {e: [{"id": i, "name": name(i, "?")} for i in ids] for e, ids in res.experts.items()},
+            "deciding_expert": res.deciding_expert,
+            "ranking": [{"id": i, "name": name(i, "?"), "score": round(res.scores.get(i, 0.0), 3)}
+                        for i in res.ranking[:RANKING_SHOWN]],
+            "failures": res.failures, "latency_ms": round(res.latency_ms, 2),
+        }
+
+    async def list_maps(self) -> list[dict]:
+        """The served maps: name, instance and room counts."""
+        return [{"name": name, "instances": len(s.scene.instances), "rooms": len(s.scene.rooms),
+                 "default": i == 0} for i, (name, s) in enumerate(self.maps.items())]
+
+    def map_summary(self, map: str) -> dict:
+        """A map's content for the MCP resource: rooms, categories and every instance in brief."""
+        store = self.store(map)
+        scene = store.scene
+        return {"scene_id": scene.scene_id, "rooms": store.list_rooms(), "categories": store.list_categories(),
+                "grid": {"height": scene.grid.height, "width": scene.grid.width,
+                         "cell_size": scene.grid.cell_size, "origin": list(scene.grid.origin)},
+                "instances": store.find_instances(limit=len(scene.instances))}
+
+    def _store_tool(self, name: str) -> Callable[..., Any]:
+        """An async tool running `MapStore.<name>` on the map its `map` argument names; its
+        signature and docstring are the method's plus `map`."""
+        method = getattr(MapStore, name)
+        hints = typing.get_type_hints(method)
+        params = [p.replace(annotation=hints.get(p.name, Any))
+                  for p in inspect.signature(method).parameters.values() if p.name != "self"]
+        params.append(inspect.Parameter("map", inspect.Parameter.KEYWORD_ONLY, default=None,
+                                        annotation=Optional[str]))
+
+        async def tool(**arguments: Any) -> Any:
+            store = self.store(arguments.pop("map", None))
+            return getattr(store, name)(**arguments)
+
+        tool.__name__ = tool.__qualname__ = name
+        tool.__doc__ = (inspect.getdoc(method) or name) + _MAP_ARG_DOC
+        tool.__signature__ = inspect.Signature(params, return_annotation=hints.get("return", Any))  # type: ignore[attr-defined]
+        tool.__annotations__ = {**{p.name: p.annotation for p in params}, "return": hints.get("return", Any)}
+        return tool
+
+    def tools(self) -> list[Callable[..., Any]]:
+        """Every tool, as async functions whose signature and docstring are their schema:
+        `find_goal`, `list_maps`, then the store tools in `mapstore.TOOLS` order."""
+        return [self.find_goal, self.list_maps] + [self._store_tool(n) for n in mapstore_module.TOOLS]
+
+
+def tool_specs(service: MapService | None = None) -> list[dict]:
+    """{"name", "description", "parameters"} per tool (the same schemas `MapStore.tool_specs()` gives
+    its methods, plus `map`)."""
+    return [function_schema(fn) for fn in (service or MapService()).tools()]
+
+
+def format_specs(specs: list[dict], fmt: Literal["json", "openai", "mcp"] = "json") -> list[dict]:
+    """Tool specs as plain JSON schemas (`json`), OpenAI function-calling `tools` entries
+    (`openai`) or MCP `Tool` objects (`mcp`: name, description, inputSchema)."""
+    if fmt == "json":
+        return specs
+    if fmt == "openai":
+        return [{"type": "function", "function": spec} for spec in specs]
+    if fmt == "mcp":
+        return [{"name": s["name"], "description": s["description"], "inputSchema": s["parameters"]} for s in specs]
+    raise IesmError(f"unknown tool spec format {fmt!r}; known: {', '.join(SPEC_FORMATS)}", None, "--format")

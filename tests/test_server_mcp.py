@@ -1,0 +1,95 @@
+"""The MCP server in-process, through the official SDK's client."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+pytest.importorskip("mcp")
+
+from mcp import Client  # noqa: E402
+
+from iesm_agent.retrieval import Retriever  # noqa: E402
+from iesm_agent.server import MapService, tool_specs  # noqa: E402
+from iesm_agent.server.app import build_server  # noqa: E402
+from iesm_agent.store import InstanceGrid, MapStore  # noqa: E402
+
+
+@pytest.fixture(autouse=True)
+def _no_embeddings(monkeypatch):
+    monkeypatch.setenv("IESM_EMBEDDINGS", "0")
+
+
+@pytest.fixture()
+def two_maps(apartment_store) -> MapService:
+    """The apartment, and a copy of it as 'flat' without its chairs."""
+    scene = apartment_store.scene
+    kept = [i for i in scene.instances if i.label != "chair"]
+    cells, ids, top = scene.occupancy.entries()
+    keep = np.isin(ids, [i.id for i in kept])
+    flat = scene.model_copy(update={"scene_id": "flat", "instances": kept, "embeddings": None,
+                                    "occupancy": InstanceGrid.from_entries(cells[keep], ids[keep], top[keep])})
+    return MapService({"apartment": apartment_store, "flat": MapStore(flat)})
+
+
+def _payload(result) -> object:
+    assert not result.is_error, result.content[0].text
+    return json.loads(result.content[0].text)
+
+
+async def test_list_tools_and_find_goal(apartment_store):
+    server = build_server(MapService({"apartment": apartment_store}))
+    async with Client(server) as client:
+        listed = (await client.list_tools()).tools
+        specs = tool_specs()
+        assert [t.name for t in listed] == [s["name"] for s in specs]
+        assert [t.input_schema for t in listed] == [s["parameters"] for s in specs]
+        assert {"find_goal", "get_instance", "list_rooms", "instances_near", "stacked_with"} <= {t.name for t in listed}
+
+        query = "the red chair in the office"
+        found = _payload(await client.call_tool("find_goal", {"query": query}))
+        expected = Retriever(apartment_store).ask(query)
+        assert found["instance_id"] == expected.instance_id
+        assert (found["label"], found["room"]) == ("chair", "office")
+        assert set(found["gate"]) == set(expected.gate) and found["experts"]
+
+        inst = _payload(await client.call_tool("get_instance", {"instance_id": found["instance_id"]}))
+        assert inst["caption"] == found["caption"]
+        rooms = _payload(await client.call_tool("list_rooms", {}))
+        assert [r["label"] for r in rooms] == [r["label"] for r in apartment_store.list_rooms()]
+
+
+@pytest.mark.parametrize("name, arguments, message", [
+    ("get_instance", {"instance_id": 987654}, "unknown instance id 987654"),
+    ("get_instance", {"instance_id": "seven"}, "instance_id"),
+    ("find_goal", {"query": "q" * 100_000}, "100000 characters"),
+    ("find_goal", {"query": 42}, "query"),
+    ("find_goal", {"query": "chair", "map": "castle"}, "unknown map 'castle'"),
+    ("instances_near", {"x": "left", "y": 0.0}, "x"),
+    ("stacked_with", {}, "instance_id"),
+])
+async def test_bad_calls_are_tool_errors_and_the_server_stays_up(apartment_store, name, arguments, message):
+    async with Client(build_server(MapService({"apartment": apartment_store}))) as client:
+        bad = await client.call_tool(name, arguments)
+        assert bad.is_error and message in bad.content[0].text
+        assert _payload(await client.call_tool("list_maps", {}))[0]["name"] == "apartment"
+
+
+async def test_each_map_is_a_resource_and_tools_pick_the_map(two_maps):
+    async with Client(build_server(two_maps)) as client:
+        resources = {str(r.uri): r for r in (await client.list_resources()).resources}
+        assert set(resources) == {"iesm://maps/apartment", "iesm://maps/flat"}
+        content = (await client.read_resource("iesm://maps/flat")).contents[0]
+        summary = json.loads(content.text)
+        assert summary["scene_id"] == "flat"
+        assert len(summary["instances"]) == len(two_maps.maps["flat"].scene.instances)
+        assert all(i["label"] != "chair" for i in summary["instances"])
+
+        in_apartment = _payload(await client.call_tool("find_instances", {"category": "chair"}))
+        in_flat = _payload(await client.call_tool("find_instances", {"category": "chair", "map": "flat"}))
+        assert any(i["label"] == "chair" for i in in_apartment)
+        assert all(i["label"] != "chair" for i in in_flat)
+        goal = _payload(await client.call_tool("find_goal", {"query": "the red chair in the office", "map": "flat"}))
+        assert goal["map"] == "flat" and goal["label"] != "chair"
