@@ -1,0 +1,118 @@
+"""Colour of masked pixels, named in a perceptual space.
+
+Pixels are converted to CIELAB (D65; L in 0-100) with OpenCV, the object's colour is a
+lightness-robust median (see `masked_lab`), and its name is the nearest entry of the shipped
+XKCD colour-survey table (`data/colours.json`, CC0) under CIEDE2000.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+
+#: the pixels whose lightness lies between these percentiles set the colour (see `masked_lab`)
+LIGHTNESS_BAND = (50.0, 90.0)
+
+
+@dataclass(frozen=True)
+class ColourTable:
+    """Named colours: `names` (N,), `families` (N,) lexicon colour families, `lab` (N, 3) float64."""
+
+    names: tuple[str, ...]
+    families: tuple[str, ...]
+    lab: np.ndarray
+
+    def family_of(self, name: str) -> str | None:
+        """The family of a table name ("navy blue" -> "navy"), None if the name is not in the table."""
+        try:
+            return self.families[self.names.index(name)]
+        except ValueError:
+            return None
+
+
+def rgb_to_lab(rgb: np.ndarray) -> np.ndarray:
+    """(..., 3) sRGB uint8 (or floats in 0-255) -> (..., 3) float64 CIELAB."""
+    import cv2
+
+    arr = np.asarray(rgb, np.float32)
+    flat = arr.reshape(-1, 1, 3) / np.float32(255.0)
+    lab = cv2.cvtColor(flat, cv2.COLOR_RGB2Lab)
+    return lab.reshape(arr.shape).astype(np.float64)
+
+
+@lru_cache(maxsize=1)
+def colour_table() -> ColourTable:
+    """The shipped colour table (read once)."""
+    data = json.loads(resources.files(__package__).joinpath("data/colours.json").read_text("utf-8"))
+    rows = data["colours"]
+    rgb = np.array([[int(r["hex"][i:i + 2], 16) for i in (1, 3, 5)] for r in rows], np.float64)
+    return ColourTable(tuple(r["name"] for r in rows), tuple(r["family"] for r in rows), rgb_to_lab(rgb))
+
+
+def ciede2000(lab1: np.ndarray, lab2: np.ndarray) -> np.ndarray:
+    """CIEDE2000 colour difference (kL = kC = kH = 1) between broadcastable (..., 3) Lab arrays."""
+    lab1, lab2 = np.asarray(lab1, np.float64), np.asarray(lab2, np.float64)
+    l1, a1, b1 = lab1[..., 0], lab1[..., 1], lab1[..., 2]
+    l2, a2, b2 = lab2[..., 0], lab2[..., 1], lab2[..., 2]
+    c_bar = (np.hypot(a1, b1) + np.hypot(a2, b2)) / 2
+    g = 0.5 * (1 - np.sqrt(c_bar ** 7 / (c_bar ** 7 + 25.0 ** 7)))
+    a1p, a2p = (1 + g) * a1, (1 + g) * a2
+    c1p, c2p = np.hypot(a1p, b1), np.hypot(a2p, b2)
+    h1p = np.degrees(np.arctan2(b1, a1p)) % 360
+    h2p = np.degrees(np.arctan2(b2, a2p)) % 360
+    dlp, dcp = l2 - l1, c2p - c1p
+    dh = h2p - h1p
+    dh = np.where(dh > 180, dh - 360, np.where(dh < -180, dh + 360, dh))
+    dh = np.where(c1p * c2p == 0, 0.0, dh)
+    dhp = 2 * np.sqrt(c1p * c2p) * np.sin(np.radians(dh / 2))
+    l_bar, c_bar_p = (l1 + l2) / 2, (c1p + c2p) / 2
+    h_sum = h1p + h2p
+    h_bar = np.where(np.abs(h1p - h2p) > 180, np.where(h_sum < 360, h_sum + 360, h_sum - 360), h_sum) / 2
+    h_bar = np.where(c1p * c2p == 0, h_sum, h_bar)
+    t = (1 - 0.17 * np.cos(np.radians(h_bar - 30)) + 0.24 * np.cos(np.radians(2 * h_bar))
+         + 0.32 * np.cos(np.radians(3 * h_bar + 6)) - 0.20 * np.cos(np.radians(4 * h_bar - 63)))
+    d_theta = 30 * np.exp(-(((h_bar - 275) / 25) ** 2))
+    r_c = 2 * np.sqrt(c_bar_p ** 7 / (c_bar_p ** 7 + 25.0 ** 7))
+    s_l = 1 + 0.015 * (l_bar - 50) ** 2 / np.sqrt(20 + (l_bar - 50) ** 2)
+    s_c = 1 + 0.045 * c_bar_p
+    s_h = 1 + 0.015 * c_bar_p * t
+    r_t = -np.sin(np.radians(2 * d_theta)) * r_c
+    return np.sqrt((dlp / s_l) ** 2 + (dcp / s_c) ** 2 + (dhp / s_h) ** 2 + r_t * (dcp / s_c) * (dhp / s_h))
+
+
+def name_lab(lab: np.ndarray) -> np.ndarray:
+    """Indices into `colour_table()` of the nearest named colour (CIEDE2000) for (..., 3) Lab."""
+    table = colour_table()
+    lab = np.asarray(lab, np.float64)
+    d = ciede2000(lab[..., None, :], table.lab)
+    return np.argmin(d, axis=-1)
+
+
+def colour_name(rgb: np.ndarray | tuple[int, int, int]) -> str:
+    """Nearest table name of one sRGB triple (0-255)."""
+    return colour_table().names[int(name_lab(rgb_to_lab(np.asarray(rgb, np.float64).reshape(3))))]
+
+
+def masked_lab(rgb: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, int] | None:
+    """Lightness-robust colour of the masked pixels: (Lab (3,), pixel count used), None if the
+    mask is empty. `rgb` (H, W, 3) uint8, `mask` (H, W) bool.
+
+    Shading scales a surface's colour (lightness and chroma) while its hue stays; a plain median
+    mixes lit and shadowed faces. Under Lambert shading the lit faces are nearest the albedo, so
+    we keep the pixels whose lightness lies in the `LIGHTNESS_BAND` percentiles (the brighter
+    half without the brightest tenth: highlights, bright background at the rim) and take the
+    per-channel median of those."""
+    if mask.shape != rgb.shape[:2]:
+        raise ValueError(f"mask shape {mask.shape} differs from image shape {rgb.shape[:2]}")
+    pixels = rgb[mask]
+    if len(pixels) == 0:
+        return None
+    lab = rgb_to_lab(pixels)
+    low, high = np.percentile(lab[:, 0], LIGHTNESS_BAND)
+    keep = (lab[:, 0] >= low) & (lab[:, 0] <= high)
+    chosen = lab[keep] if keep.any() else lab
+    return np.median(chosen, axis=0), int(len(chosen))
