@@ -186,3 +186,43 @@ def test_caption_cli_writes_the_map_and_refuses_bad_input(tiny, tmp_path, capsys
     assert run(["caption", str(src), "--frames", str(frames_dir), "--keyframes", "0",
                 "-o", str(tmp_path / "y.iesm")]) == 2
     assert not (tmp_path / "y.iesm").exists()
+
+
+def _ground_truth(scene):
+    from iesm_agent.frames import GroundTruth
+
+    flat, ids, top = scene.occupancy.entries()
+    cells = InstanceGrid.from_entries(flat, ids * 10, top)  # gt ids 10 (sofa) and 20 (lamp)
+    objects = [{"id": 10, "label": "sofa", "tags": {"color": "navy"}},
+               {"id": 20, "label": "lamp", "tags": {"color": "cream"}, "color_rgb": [255, 255, 194]}]
+    return GroundTruth("tiny", objects, [], scene.grid, scene.room_map, np.zeros((20, 20), bool), cells)
+
+
+def test_colour_scores_by_family_and_by_exact_name(tiny):
+    from iesm_agent.captioning.metrics import colour_scores, eval_section
+
+    frames_dir, scene = tiny
+    gt = _ground_truth(scene)
+    # not captioned yet: eval-map runs the offline captioner itself and says so
+    section = eval_section(scene, gt, frames_dir)["captions"]
+    assert section["source"] == "offline (run by eval-map)"
+    # sofa: navy == navy; lamp: measured beige vs truth cream: same family (beige), other name
+    assert (section["colour_acc"], section["colour_name_acc"], section["n"]) == (1.0, 0.5, 2)
+    captioned = caption_map(scene, frames_dir, OfflineCaptioner())
+    assert eval_section(captioned, gt, frames_dir)["captions"]["source"] == "offline"
+    assert colour_scores(captioned, gt, min_frames=5) == {"colour_acc": None, "colour_name_acc": None,
+                                                           "n": 0, "min_frames": 5}
+    wrong = captioned.model_copy(update={"instances": [
+        i.model_copy(update={"tags": {**i.tags, "color": "red"}}) if i.id == 1 else i for i in captioned.instances]})
+    assert colour_scores(wrong, gt)["colour_acc"] == 0.5
+
+
+def test_strip_removes_captions_and_caption_tags_only(tiny, tmp_path):
+    frames_dir, scene = tiny
+    captioned, stripped_path = tmp_path / "c.iesm", tmp_path / "s.iesm"
+    save_map(caption_map(scene, frames_dir, OfflineCaptioner()), captioned)
+    assert run(["caption", str(captioned), "--strip", "-o", str(stripped_path)]) == 0
+    stripped = load_map(stripped_path)
+    sofa = stripped.instance(1)
+    assert sofa.caption == "" and sofa.tags == {"source": "mapper"} and sofa.room_label == "living room"
+    assert stripped.meta["captioner"] == "stripped"

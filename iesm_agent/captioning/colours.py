@@ -26,13 +26,6 @@ class ColourTable:
     families: tuple[str, ...]
     lab: np.ndarray
 
-    def family_of(self, name: str) -> str | None:
-        """The family of a table name ("navy blue" -> "navy"), None if the name is not in the table."""
-        try:
-            return self.families[self.names.index(name)]
-        except ValueError:
-            return None
-
 
 def rgb_to_lab(rgb: np.ndarray) -> np.ndarray:
     """(..., 3) sRGB uint8 (or floats in 0-255) -> (..., 3) float64 CIELAB."""

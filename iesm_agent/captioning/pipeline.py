@@ -101,3 +101,13 @@ def apply_captions(scene: SceneMap, views: list[InstanceView], results: list[Cap
     meta = {**scene.meta, "captioner": captioner_name, "caption_keyframes": str(keyframes),
             "caption_failures": json.dumps(failures, sort_keys=True)}
     return scene.model_copy(update={"instances": instances, "meta": meta})
+
+
+def strip_captions(scene: SceneMap) -> SceneMap:
+    """`scene` with every caption emptied and the caption tags removed (labels-only ablation);
+    rooms and other tags stay. The map's meta records `captioner` = "stripped"."""
+    instances = [i.model_copy(update={"caption": "", "tags": {k: v for k, v in i.tags.items()
+                                                                if k not in CAPTION_TAG_KEYS}})
+                 for i in scene.instances]
+    meta = {k: v for k, v in scene.meta.items() if not k.startswith("caption")}
+    return scene.model_copy(update={"instances": instances, "meta": {**meta, "captioner": "stripped"}})

@@ -31,7 +31,7 @@ def register(app: typer.Typer) -> None:
     @app.command("caption")
     def caption_cmd(
         map_path: Path = typer.Argument(..., metavar="MAP", help="a .iesm map built from frames (iesm build-map)"),
-        frames: Path = typer.Option(..., "--frames", help="the frame directory the map was built from"),
+        frames: Optional[Path] = typer.Option(None, "--frames", help="the frame directory the map was built from"),
         output: Optional[Path] = typer.Option(None, "-o", "--output", help="the .iesm file to write (default: MAP)"),
         provider: str = typer.Option("offline", "--provider", "-p",
                                      help="offline (pixels and geometry, no model) or a vision model spec, "
@@ -40,9 +40,11 @@ def register(app: typer.Typer) -> None:
         base_url: Optional[str] = typer.Option(None, "--base-url", help="OpenAI-compatible endpoint URL"),
         cache: bool = typer.Option(True, "--cache/--no-cache", help="cache model replies on disk"),
         concurrency: int = typer.Option(4, "--concurrency", help="instances captioned at once (vision models)"),
+        strip: bool = typer.Option(False, "--strip", help="remove captions and caption tags instead "
+                                                         "(labels-only ablation; no frames needed)"),
     ) -> None:
         """Caption every instance (keyframe crops -> captioner -> caption + tags) and write the map."""
-        from ..captioning import caption_map
+        from ..captioning import caption_map, strip_captions
         from ..store import open_map, resolve_map_path, save_map
         from .eval_cmds import _progress
 
@@ -54,6 +56,12 @@ def register(app: typer.Typer) -> None:
         if concurrency < 1:
             raise IesmError(f"must be >= 1, got {concurrency}", None, "--concurrency")
         scene = open_map(resolve_map_path(map_path))
+        if strip:
+            size = save_map(strip_captions(scene), output)
+            typer.echo(f"wrote {output} ({size} bytes): captions of {len(scene.instances)} instances removed")
+            return
+        if frames is None:
+            raise IesmError("give the frame directory the map was built from", None, "--frames")
         captioner = _captioner(provider, base_url, cache, concurrency)
         with _progress("caption") as bar:
             tasks: dict[str, int] = {}

@@ -23,17 +23,10 @@ EXTRA = ("silver", "ivory", "gunmetal", "warm grey", "greyish brown", "medium gr
          "off white")
 
 
-def family(name: str) -> str | None:
-    """The lexicon's canonical colour of the last colour word of `name`, or None."""
-    from iesm_agent.lexicon import load_lexicon
-
-    lex = load_lexicon()
-    spans = [s for s in lex.scan([lex.lemma(t) for t in lex.tokens(name)]) if s.has("color")]
-    return spans[-1].values("color")[0] if spans else None
-
-
 def main() -> None:
     from matplotlib.colors import XKCD_COLORS
+
+    from iesm_agent.captioning.metrics import colour_family as family
 
     by_popularity = [k.removeprefix("xkcd:") for k in reversed(list(XKCD_COLORS))]
     chosen: list[str] = []
