@@ -13,7 +13,11 @@ from .errors import IesmError
 
 
 class MappingConfig(BaseModel):
-    """Instance association / fusion (Sec. 3.1)."""
+    """Instance association / fusion (Sec. 3.1) and the map-building settings around it:
+    `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
+    are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
+    above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
+    share of instances (smallest top-down area) whose categories count as small objects."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -21,6 +25,11 @@ class MappingConfig(BaseModel):
     delta_sem: float = 0.85
     w_geo: float = 0.7
     w_sem: float = 0.3
+    cell_size: float = Field(0.05, gt=0)
+    min_mask_pixels: int = Field(20, ge=1)
+    max_depth: float = Field(10.0, gt=0)
+    match_iou: float = Field(0.5, ge=0, lt=1)
+    small_fraction: float = Field(0.2, gt=0, le=1)
 
 
 class RetrievalConfig(BaseModel):

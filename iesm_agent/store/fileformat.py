@@ -5,7 +5,8 @@ A ZIP archive (deflate; members that barely compress, e.g. embeddings, are store
 * `manifest.json`: `schema_version`, `scene_id`, `source`, `grid`, `instances`, `rooms`, `meta`,
   `embedding_model`, and `arrays`: one entry per stored array with `name`, `member`, `dtype`
   and `shape` (as in memory), `disk_dtype`, `encoding` (`raw` or `delta`) and `base`.
-* Arrays: `occupancy.cells|indptr|ids|top`, `room_map`, `obstacles`, `embeddings`.
+* Arrays: `occupancy.cells|indptr|ids|top`, `room_map`, `obstacles`, `embeddings`, and
+  `observations` (maps built from frames; files without it load with `observations=None`).
 
 On disk, integer arrays use the smallest integer dtype that holds their values; sorted ones
 (occupancy cells and indptr) are delta-encoded (first value in `base`). Loading restores the
@@ -34,7 +35,7 @@ from .model import SCHEMA_VERSION, InstanceGrid, SceneMap
 
 MANIFEST = "manifest.json"
 _ARRAYS = ("occupancy.cells", "occupancy.indptr", "occupancy.ids", "occupancy.top",
-           "room_map", "obstacles", "embeddings")
+           "room_map", "obstacles", "embeddings", "observations")
 _ARRAY_KINDS = "biuf"  # bool, signed and unsigned integers, floats
 _INT_DTYPES = [np.dtype(t) for t in ("uint8", "int8", "uint16", "int16", "uint32", "int32", "int64")]
 
@@ -83,7 +84,8 @@ def _scene_arrays(scene: SceneMap) -> dict[str, np.ndarray]:
     occ = scene.occupancy
     arrays = {"occupancy.cells": occ.cells, "occupancy.indptr": occ.indptr,
               "occupancy.ids": occ.ids, "occupancy.top": occ.top,
-              "room_map": scene.room_map, "obstacles": scene.obstacles, "embeddings": scene.embeddings}
+              "room_map": scene.room_map, "obstacles": scene.obstacles, "embeddings": scene.embeddings,
+              "observations": scene.observations}
     return {k: np.asarray(v) for k, v in arrays.items() if v is not None}
 
 

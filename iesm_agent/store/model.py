@@ -168,7 +168,8 @@ class SceneMap(BaseModel):
 
     `room_map` (H, W) int32: room id per cell, -1 where none. `obstacles` (H, W) bool.
     `embeddings` (N, D) float array aligned with `instances` (row i = instances[i]); `embedding_model`
-    names the model that produced them.
+    names the model that produced them. `observations` (M, 5) float64, maps built from frames only:
+    rows [instance_id, frame_index, mask_index_in_that_frame, mask_area_px, mask_score].
     """
 
     model_config = ConfigDict(arbitrary_types_allowed=True, extra="forbid")
@@ -184,6 +185,7 @@ class SceneMap(BaseModel):
     obstacles: Optional[np.ndarray] = None
     embeddings: Optional[np.ndarray] = None
     embedding_model: Optional[str] = None
+    observations: Optional[np.ndarray] = None
     meta: dict[str, str] = Field(default_factory=dict)
 
     @model_validator(mode="after")
@@ -201,6 +203,13 @@ class SceneMap(BaseModel):
                 raise ValueError(f"{name} has shape {layer.shape}, grid is {hw}")
         if self.embeddings is not None and (self.embeddings.ndim != 2 or len(self.embeddings) != len(self.instances)):
             raise ValueError(f"embeddings must be (N={len(self.instances)}, D), got {self.embeddings.shape}")
+        if self.observations is not None:
+            obs = self.observations
+            if obs.ndim != 2 or obs.shape[1] != 5:
+                raise ValueError(f"observations must be (M, 5), got {obs.shape}")
+            unknown_obs = set(np.unique(obs[:, 0]).tolist()) - set(ids)
+            if unknown_obs:
+                raise ValueError(f"observations refer to unknown instance ids {sorted(unknown_obs)[:5]}")
         n_cells = self.grid.height * self.grid.width
         if len(self.occupancy.cells) and (self.occupancy.cells[0] < 0 or self.occupancy.cells[-1] >= n_cells):
             raise ValueError("occupancy cells fall outside the grid")
@@ -213,7 +222,7 @@ class SceneMap(BaseModel):
         """Field-wise equality; arrays must match in dtype, shape and values (NaN == NaN)."""
         if not isinstance(other, SceneMap):
             return NotImplemented
-        arrays = ("room_map", "obstacles", "embeddings")
+        arrays = ("room_map", "obstacles", "embeddings", "observations")
         return (self.model_dump(exclude={"occupancy", *arrays}) == other.model_dump(exclude={"occupancy", *arrays})
                 and self.occupancy == other.occupancy
                 and all(arrays_equal(getattr(self, k), getattr(other, k)) for k in arrays))

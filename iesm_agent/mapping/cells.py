@@ -1,0 +1,69 @@
+"""Sparse top-down masks as sorted integer cell keys, and the set operations mapping needs.
+
+A global cell (row, col) = (floor(y / s), floor(x / s)) for world (x, y) in metres and cell size
+s; its key is `(row + OFFSET) * SPAN + (col + OFFSET)`, so sorting keys sorts cells row-major and
+any scene within +-50 km fits. A top-down mask is a sorted, duplicate-free int64 key array.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+OFFSET = 1 << 20
+SPAN = 1 << 21
+
+
+def keys_of(rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Keys (int64) of global cells `rows`, `cols`."""
+    return (np.asarray(rows, np.int64) + OFFSET) * SPAN + (np.asarray(cols, np.int64) + OFFSET)
+
+
+def rowcol_of(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Global (rows, cols) of `keys`."""
+    keys = np.asarray(keys, np.int64)
+    return keys // SPAN - OFFSET, keys % SPAN - OFFSET
+
+
+def run_starts(sorted_values: np.ndarray) -> np.ndarray:
+    """Indices where a new run of equal values begins in a sorted 1-D array."""
+    if len(sorted_values) == 0:
+        return np.zeros(0, np.int64)
+    return np.flatnonzero(np.r_[True, sorted_values[1:] != sorted_values[:-1]])
+
+
+def union_max(keys_a: np.ndarray, top_a: np.ndarray, keys_b: np.ndarray,
+              top_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Mask OR of two sparse masks; a cell in both keeps the larger top height (m)."""
+    keys = np.concatenate([keys_a, keys_b])
+    tops = np.concatenate([top_a, top_b])
+    order = np.argsort(keys, kind="stable")
+    keys, tops = keys[order], tops[order]
+    starts = run_starts(keys)
+    return keys[starts], np.maximum.reduceat(tops, starts) if len(keys) else tops
+
+
+def intersections(keys_a: np.ndarray, owner_a: np.ndarray, keys_b: np.ndarray,
+                  owner_b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Pairwise intersection areas (in cells) between two families of sparse masks.
+
+    `keys_a` / `owner_a` (n,) list every cell of every mask of family A with its mask index
+    (a mask's cells are distinct); likewise B. Returns (a, b, count) for every pair (a, b) that
+    shares at least one cell, sorted by (a, b).
+    """
+    empty = np.zeros(0, np.int64)
+    if len(keys_a) == 0 or len(keys_b) == 0:
+        return empty, empty, empty
+    order = np.argsort(keys_b, kind="stable")
+    kb, ob = keys_b[order], np.asarray(owner_b, np.int64)[order]
+    lo = np.searchsorted(kb, keys_a, "left")
+    hits = np.searchsorted(kb, keys_a, "right") - lo
+    total = int(hits.sum())
+    if total == 0:
+        return empty, empty, empty
+    first = np.cumsum(hits) - hits
+    pos = np.arange(total) - np.repeat(first - lo, hits)
+    pa = np.repeat(np.asarray(owner_a, np.int64), hits)
+    pb = ob[pos]
+    base = int(pb.max()) + 1
+    codes, counts = np.unique(pa * base + pb, return_counts=True)
+    return codes // base, codes % base, counts

@@ -1,0 +1,148 @@
+"""The instance dictionary I^exist: association against it, fusion into it, and the second
+association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion").
+
+Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
+the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
+the same way), the weight w (number of fused observations) and its observations
+(frame index, mask index, mask area in pixels, mask score).
+
+Fusion of an entry with weight w and an observation of weight v (1 for a frame's candidate):
+mask OR (per-cell top = max), f <- (w f + v f_c) / (w + v), h likewise, w <- w + v. With v = 1
+these are the paper's equations; the second pass fuses whole entries with v = their weight.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..config import MappingConfig
+from .association import phi_geo, phi_sem, select_matches
+from .cells import intersections, union_max
+from .project import TopDownCandidates
+
+_EMPTY = np.zeros(0, np.int64)
+
+
+class InstanceDictionary:
+    """Growing instance dictionary; arrays are indexed by entry (0..len-1)."""
+
+    def __init__(self, dim: int, cfg: MappingConfig):
+        self.cfg = cfg
+        self.keys: list[np.ndarray] = []          # per entry: sorted cell keys
+        self.tops: list[np.ndarray] = []          # per entry: top height (m) of each cell
+        self.observations: list[list[tuple[int, int, int, float]]] = []
+        self._f = np.zeros((16, dim))             # embeddings
+        self._w = np.zeros(16)                    # weights
+        self._h = np.zeros(16)                    # mean heights, m
+        self._size = np.zeros(16, np.int64)       # cells per mask
+        self._bbox = np.zeros((16, 4), np.int64)  # global (row_min, row_max, col_min, col_max)
+
+    def __len__(self) -> int:
+        return len(self.keys)
+
+    @property
+    def embeddings(self) -> np.ndarray:
+        return self._f[:len(self)]
+
+    @property
+    def weights(self) -> np.ndarray:
+        return self._w[:len(self)]
+
+    @property
+    def mean_heights(self) -> np.ndarray:
+        return self._h[:len(self)]
+
+    @property
+    def sizes(self) -> np.ndarray:
+        return self._size[:len(self)]
+
+    def add(self, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
+            bbox: np.ndarray, observations: list) -> int:
+        """Append a new entry; returns its index."""
+        n = len(self)
+        if n == len(self._w):
+            grow = 2 * n
+            self._f = np.resize(self._f, (grow, self._f.shape[1]))
+            self._w, self._h, self._size = np.resize(self._w, grow), np.resize(self._h, grow), np.resize(self._size, grow)
+            self._bbox = np.resize(self._bbox, (grow, 4))
+        self.keys.append(keys)
+        self.tops.append(top)
+        self.observations.append(list(observations))
+        self._f[n], self._w[n], self._h[n], self._size[n], self._bbox[n] = f, weight, height, len(keys), bbox
+        return n
+
+    def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
+             bbox: np.ndarray, observations: list) -> None:
+        """Fuse an observation (or a whole entry) of weight `weight` into entry `i`."""
+        w = self._w[i]
+        self.keys[i], self.tops[i] = union_max(self.keys[i], self.tops[i], keys, top)
+        self._f[i] = (w * self._f[i] + weight * np.asarray(f)) / (w + weight)
+        self._h[i] = (w * self._h[i] + weight * height) / (w + weight)
+        self._w[i] = w + weight
+        self._size[i] = len(self.keys[i])
+        box = self._bbox[i]
+        self._bbox[i] = (min(box[0], bbox[0]), max(box[1], bbox[1]), min(box[2], bbox[2]), max(box[3], bbox[3]))
+        self.observations[i].extend(observations)
+
+    def compare(self, keys: np.ndarray, owners: np.ndarray, areas: np.ndarray, bboxes: np.ndarray,
+                f: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """phi_geo and phi_sem of every (mask, entry) pair whose masks share a cell.
+
+        The masks to compare are given by their cells (`keys`, `owners` = mask index), `areas`
+        (cells), `bboxes` (M, 4) and embeddings `f` (M, D). Entries whose bounding box misses
+        every mask's box are skipped before any cell is touched. Returns (mask, entry, geo, sem).
+        """
+        n = len(self)
+        if n == 0 or len(keys) == 0:
+            return _EMPTY, _EMPTY, np.zeros(0), np.zeros(0)
+        box = self._bbox[:n]
+        near = ((bboxes[:, None, 0] <= box[None, :, 1]) & (bboxes[:, None, 1] >= box[None, :, 0])
+                & (bboxes[:, None, 2] <= box[None, :, 3]) & (bboxes[:, None, 3] >= box[None, :, 2])).any(axis=0)
+        near = np.flatnonzero(near)
+        if len(near) == 0:
+            return _EMPTY, _EMPTY, np.zeros(0), np.zeros(0)
+        entry_keys = np.concatenate([self.keys[e] for e in near])
+        entry_owner = np.repeat(near, self._size[near])
+        a, e, inter = intersections(keys, owners, entry_keys, entry_owner)
+        return a, e, phi_geo(inter, areas[a], self._size[e]), phi_sem(f[a], self._f[e])
+
+    def integrate(self, cands: TopDownCandidates, embeddings: np.ndarray, scores: np.ndarray,
+                  frame_index: int) -> np.ndarray:
+        """Associate one frame's candidates with the dictionary as it was before the frame and
+        fuse them (matched) or add them (new). `embeddings` (K, D) and `scores` (K,) are indexed
+        by mask index. Returns the entry index each candidate went to (A,)."""
+        f = np.asarray(embeddings, np.float64)[cands.mask_index]
+        areas = np.diff(cands.offsets)
+        a, e, geo, sem = self.compare(cands.keys, cands.owners(), areas, cands.bbox, f)
+        match = select_matches(a, e, geo, sem, len(cands), self.cfg)
+        target = np.empty(len(cands), np.int64)
+        for c in range(len(cands)):
+            keys, top = cands.cells(c)
+            obs = [(frame_index, int(cands.mask_index[c]), int(cands.area_px[c]),
+                    float(scores[cands.mask_index[c]]))]
+            args = (keys, top, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
+            if match[c] >= 0:
+                self.fuse(int(match[c]), *args)
+                target[c] = match[c]
+            else:
+                target[c] = self.add(*args)
+        return target
+
+    def second_pass(self) -> tuple["InstanceDictionary", int]:
+        """The second association-fusion pass: every entry, heaviest first (ties by index), is
+        associated with the dictionary rebuilt so far and fused into it or added. Returns the
+        new dictionary and the number of merges."""
+        out = InstanceDictionary(self._f.shape[1], self.cfg)
+        merges = 0
+        for i in np.argsort(-self.weights, kind="stable"):
+            keys = self.keys[i]
+            a, e, geo, sem = out.compare(keys, np.zeros(len(keys), np.int64), self._size[i:i + 1],
+                                         self._bbox[i:i + 1], self._f[i:i + 1])
+            m = select_matches(a, e, geo, sem, 1, self.cfg)[0]
+            args = (keys, self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
+            if m >= 0:
+                out.fuse(int(m), *args)
+                merges += 1
+            else:
+                out.add(*args)
+        return out, merges

@@ -1,0 +1,220 @@
+"""Evaluation of a built map against simulator ground truth (`iesm eval-map`), and of the 2D
+point-wise baseline on the same ground truth (see `metrics` for the definitions).
+
+Ground-truth instances evaluated: those seen in the frames (at least `min_mask_pixels` pixels
+over all DIR/frames/*.inst.png; every object of gt/objects.json when there are none). Small
+objects: instances of categories whose mean top-down area is in the bottom 20 % of instance
+areas (per scene). Stacked objects: instances sharing at least one cell with another instance in
+the ground-truth 2.5D map (gt/cells.npz).
+"""
+
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Optional
+
+import numpy as np
+
+from ..config import MappingConfig
+from ..frames import FrameSet, GroundTruth
+from ..store.model import SceneMap
+from .categorize import category_ranking, category_scores
+from .matching import greedy_pairs, iou_pairs, keys_in_grid, masks_in_grid
+from .metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, small_categories, topmost_labels
+
+#: optional sections other stages contribute: "module:function(scene, gt, frames_dir) -> dict"
+SECTIONS = ("iesm_agent.rooms.metrics:eval_section", "iesm_agent.captioning.metrics:eval_section")
+
+
+@dataclass
+class EvalContext:
+    """Ground truth prepared once per scene: category list + embeddings E (J, D), the evaluated
+    GT ids and their category index (-1 = not in the list), their top-down masks in the GT grid,
+    per-cell GT classes, and the small / stacked subsets."""
+
+    gt: GroundTruth
+    categories: list[str]
+    e: np.ndarray
+    gt_ids: np.ndarray
+    gt_class: dict[int, int]
+    gt_cells: tuple[np.ndarray, np.ndarray, np.ndarray]
+    cell_classes: np.ndarray
+    small: set[int]
+    small_labels: set[str]
+    stacked: set[int]
+    cfg: MappingConfig
+
+    @classmethod
+    def create(cls, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None) -> "EvalContext":
+        from .build import category_vectors
+
+        cfg = cfg or MappingConfig()
+        frames = FrameSet.open(frames_dir)
+        categories, e = category_vectors(frames)
+        index = {c.lower(): j for j, c in enumerate(categories)}
+        labels = {int(o["id"]): str(o["label"]) for o in gt.objects}
+        flat, ids, top = gt.cells.entries()
+        visible = seen_ids(frames, cfg.min_mask_pixels)
+        keep_ids = np.array(sorted(set(labels) & set(np.unique(ids).tolist())
+                                   & (visible if visible is not None else set(labels))), np.int64)
+        sel = np.isin(ids, keep_ids)
+        flat, ids, top = flat[sel], ids[sel], top[sel]
+        gt_class = {i: index.get(labels[i].lower(), -1) for i in keep_ids.tolist()}
+        extra = {lab: len(categories) + k for k, lab in enumerate(sorted({labels[i].lower() for i in gt_class
+                                                                         if gt_class[i] < 0}))}
+        cell_class = {i: (c if c >= 0 else extra[labels[i].lower()]) for i, c in gt_class.items()}
+        cell_classes = topmost_labels(flat, ids, top, cell_class, gt.grid.height * gt.grid.width)
+        area = np.bincount(ids, minlength=int(keep_ids.max(initial=0)) + 1)[keep_ids]
+        small_labels = small_categories([labels[i] for i in keep_ids.tolist()], area, cfg.small_fraction)
+        small = {i for i in keep_ids.tolist() if labels[i] in small_labels}
+        order = np.argsort(flat, kind="stable")
+        f_sorted, id_sorted = flat[order], ids[order]
+        shared = np.r_[f_sorted[1:] == f_sorted[:-1], False] | np.r_[False, f_sorted[1:] == f_sorted[:-1]]
+        stacked = set(np.unique(id_sorted[shared]).tolist())
+        return cls(gt, categories, e, keep_ids, gt_class, (flat, ids, top), cell_classes, small, small_labels,
+                   stacked, cfg)
+
+
+def seen_ids(frames: FrameSet, min_pixels: int) -> Optional[set[int]]:
+    """Ground-truth ids with at least `min_pixels` pixels over all instance images (None if there are none)."""
+    import cv2
+
+    counts = np.zeros(1, np.int64)
+    found = False
+    for i in range(len(frames)):
+        path = frames.path(i, "inst.png")
+        if not path.is_file():
+            continue
+        image = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
+        if image is None:
+            continue
+        found = True
+        c = np.bincount(image.ravel().astype(np.int64))
+        if len(c) > len(counts):
+            counts = np.pad(counts, (0, len(c) - len(counts)))
+        counts[:len(c)] += c
+    if not found:
+        return None
+    return set(np.flatnonzero(counts >= min_pixels).tolist()) - {0}
+
+
+@dataclass
+class Prediction:
+    """What is scored: instance `ids` (N,), category `ranking` (N, J) best first, top-down masks
+    in the GT grid as (flat cell, id, top) entries; optionally per-cell classes (the 2D map's own)
+    and fixed gt -> pred `matches` (by construction, for the GT-mask baseline)."""
+
+    ids: np.ndarray
+    ranking: np.ndarray
+    cells: tuple[np.ndarray, np.ndarray, np.ndarray]
+    cell_classes: Optional[np.ndarray] = None
+    matches: Optional[dict[int, int]] = None
+
+
+def prediction_from_map(scene: SceneMap, ctx: EvalContext) -> Prediction:
+    """A built (or imported) map as a prediction; its embeddings rank the categories (Z = F E^T),
+    or, without embeddings, its label alone (rank 1 or absent)."""
+    ids = np.array([inst.id for inst in scene.instances], np.int64)
+    j = len(ctx.categories)
+    if scene.embeddings is not None and scene.embeddings.shape[1] == ctx.e.shape[1]:
+        ranking = category_ranking(category_scores(scene.embeddings, ctx.e))
+    else:
+        index = {c.lower(): k for k, c in enumerate(ctx.categories)}
+        first = np.array([index.get(inst.label.lower(), -1) for inst in scene.instances], np.int64)
+        ranking = np.full((len(ids), j), -1, np.int64)
+        ranking[:, 0] = first
+    return Prediction(ids, ranking, masks_in_grid(scene.occupancy, scene.grid, ctx.gt.grid))
+
+
+def prediction_from_pointwise(keys: np.ndarray, scores: np.ndarray, cell_size: float,
+                              ctx: EvalContext) -> Prediction:
+    """The 2D point-wise map (cell keys (C,), mean category scores (C, J)) as "VLMaps + GT mask":
+    one instance per evaluated GT instance with the GT mask; its descriptor averages the cell
+    scores inside the mask (no observed cell: no ranking). Cell classes: per-cell argmax."""
+    grid = ctx.gt.grid
+    flat = keys_in_grid(keys, cell_size, grid)
+    inside = flat >= 0
+    flat, scores = flat[inside], scores[inside]
+    order = np.argsort(flat, kind="stable")        # cells landing together are averaged
+    flat, scores = flat[order], scores[order]
+    starts = np.flatnonzero(np.r_[True, flat[1:] != flat[:-1]]) if len(flat) else np.zeros(0, np.int64)
+    n_per = np.diff(np.append(starts, len(flat)))
+    cell_flat = flat[starts]
+    cell_scores = np.add.reduceat(scores, starts, axis=0) / n_per[:, None] if len(flat) else scores
+    cell_classes = np.full(grid.height * grid.width, -1, np.int64)
+    cell_classes[cell_flat] = cell_scores.argmax(axis=1)
+    gflat, gids, gtop = ctx.gt_cells
+    pos = np.searchsorted(cell_flat, gflat)
+    hit = (pos < len(cell_flat)) & (cell_flat[np.minimum(pos, len(cell_flat) - 1)] == gflat) \
+        if len(cell_flat) else np.zeros(len(gflat), bool)
+    row_of = np.searchsorted(ctx.gt_ids, gids[hit])
+    j = len(ctx.categories)
+    sums = np.zeros((len(ctx.gt_ids), j))
+    np.add.at(sums, row_of, cell_scores[pos[hit]])
+    seen = np.bincount(row_of, minlength=len(ctx.gt_ids)) > 0
+    ranking = category_ranking(sums)
+    ranking[~seen] = -1
+    matches = {int(i): int(i) for i in ctx.gt_ids}
+    return Prediction(ctx.gt_ids.copy(), ranking, (gflat, gids, gtop), cell_classes, matches)
+
+
+def score(pred: Prediction, ctx: EvalContext) -> dict:
+    """Every mapping metric of `pred` (keys: auc_top {pred, gt, match, top1_match}, instance_diff,
+    n_pred, n_gt, n_matched, topdown {acc, macc, miou, fmiou}, small {...}, stacked {...})."""
+    j = len(ctx.categories)
+    matches = pred.matches
+    if matches is None:
+        g, p, iou = iou_pairs((pred.cells[0], pred.cells[1]), (ctx.gt_cells[0], ctx.gt_cells[1]))
+        keep = np.isin(g, ctx.gt_ids)
+        matches = greedy_pairs(g[keep], p[keep], iou[keep], ctx.cfg.match_iou)
+    gt_m = np.array(sorted(matches), np.int64)
+    pred_m = np.array([matches[g] for g in gt_m.tolist()], np.int64)
+    row = {int(i): k for k, i in enumerate(pred.ids.tolist())}
+    rows = np.array([row[p] for p in pred_m.tolist()], np.int64)
+    ranks = gt_ranks(pred.ranking[rows] if len(rows) else np.zeros((0, j), np.int64),
+                     np.array([ctx.gt_class[g] for g in gt_m.tolist()], np.int64))
+    n_pred, n_gt = len(pred.ids), len(ctx.gt_ids)
+    out = {"auc_top": auc_top_all(ranks, j, n_pred, n_gt), "instance_diff": abs(n_pred - n_gt),
+           "n_pred": n_pred, "n_gt": n_gt, "n_matched": len(gt_m)}
+    cells = pred.cell_classes
+    if cells is None:
+        top1 = {int(i): int(pred.ranking[k, 0]) for k, i in enumerate(pred.ids.tolist())}
+        cells = topmost_labels(*pred.cells, top1, len(ctx.cell_classes))
+    out["topdown"] = label_map_scores(ctx.cell_classes, cells)
+    small_pairs = np.isin(gt_m, list(ctx.small))
+    small_idx = {ctx.categories.index(c) for c in ctx.categories if c in ctx.small_labels}
+    pred_small = {int(i) for k, i in enumerate(pred.ids.tolist()) if int(pred.ranking[k, 0]) in small_idx}
+    pred_small |= set(pred_m[small_pairs].tolist())
+    out["small"] = {"auc_top": auc_top_all(ranks[small_pairs], j, len(pred_small), len(ctx.small)),
+                    "instance_diff": abs(len(pred_small) - len(ctx.small)), "n_pred": len(pred_small),
+                    "n_gt": len(ctx.small), "categories": sorted(ctx.small_labels)}
+    st = np.isin(gt_m, list(ctx.stacked))
+    n_st = len(ctx.stacked)
+    out["stacked"] = {"n_gt": n_st, "top1_recall": float(np.count_nonzero(ranks[st] == 1) / n_st) if n_st else 0.0,
+                      "auc_top_gt": auc_top(ranks[st], j, n_st)}
+    return out
+
+
+def run_sections(scene: SceneMap, gt: GroundTruth, frames_dir: Path, sections=SECTIONS) -> dict:
+    """Results of the optional sections whose module exists (each returns a dict of keys)."""
+    out: dict = {}
+    for spec in sections:
+        module_name, func = spec.split(":")
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as exc:
+            if exc.name and module_name.startswith(exc.name):
+                continue  # that stage is not built (yet)
+            raise
+        out.update(getattr(module, func)(scene, gt, Path(frames_dir)))
+    return out
+
+
+def evaluate_map(scene: SceneMap, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None) -> dict:
+    """All mapping metrics of `scene` against `gt`, then the optional sections (rooms, captions)."""
+    ctx = EvalContext.create(gt, frames_dir, cfg)
+    result = score(prediction_from_map(scene, ctx), ctx)
+    result.update(run_sections(scene, gt, Path(frames_dir)))
+    return result

@@ -1,0 +1,149 @@
+"""`iesm build-map` / `iesm eval-map` on a tiny hand-made frame set (a table with a cup on it and
+a chair, seen by a downward-looking camera), the `observations` round trip, and bad input."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from iesm_agent.cli import run
+from iesm_agent.embeddings import text_vectors
+from iesm_agent.frames import (Frame, GroundTruth, Intrinsics, SceneMeta, Segmentation, write_frame,
+                               write_frame_set)
+from iesm_agent.store import load_map, save_map
+from iesm_agent.store.model import GridSpec, InstanceGrid
+
+CATEGORIES = ["table", "cup", "chair", "sofa", "bed", "lamp"]
+# id, label, centre (x, y), size (dx, dy), bottom z, top z
+BOXES = [(1, "table", (1.0, 1.0), (1.2, 0.8), 0.0, 0.75),
+         (2, "cup", (1.2, 1.1), (0.15, 0.15), 0.75, 0.87),
+         (3, "chair", (2.2, 1.0), (0.5, 0.5), 0.0, 0.9)]
+CAM_Z = 3.0
+INTR = Intrinsics(width=160, height=120, fx=80.0, fy=80.0, cx=79.5, cy=59.5)
+
+
+def _render(cam_xy: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """Depth (H, W) m and instance ids of a camera at CAM_Z looking straight down (top faces only)."""
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width].astype(float)
+    depth = np.full(u.shape, CAM_Z, np.float32)
+    ids = np.zeros(u.shape, np.int32)
+    for iid, _label, (cx, cy), (dx, dy), _z0, top in sorted(BOXES, key=lambda b: b[5]):
+        d = CAM_Z - top
+        x = cam_xy[0] + (u - INTR.cx) * d / INTR.fx
+        y = cam_xy[1] - (v - INTR.cy) * d / INTR.fy
+        hit = (np.abs(x - cx) <= dx / 2) & (np.abs(y - cy) <= dy / 2)
+        depth[hit], ids[hit] = d, iid
+    return depth, ids
+
+
+def _pose(cam_xy) -> np.ndarray:
+    return np.array([[1, 0, 0, cam_xy[0]], [0, -1, 0, cam_xy[1]], [0, 0, -1, CAM_Z], [0, 0, 0, 1]], float)
+
+
+def write_tiny_world(directory: Path, n_frames: int = 4) -> Path:
+    """A frame directory with ground truth: masks from the instance ids, hash-space embeddings."""
+    labels = {b[0]: b[1] for b in BOXES}
+    emb, space = text_vectors([labels[i] for i in sorted(labels)], "hash-384")
+    write_frame_set(directory, SceneMeta(scene_id="tiny", n_frames=n_frames, embedding_space=space,
+                                         categories=CATEGORIES), INTR)
+    for i in range(n_frames):
+        cam = (0.9 + 0.4 * i, 1.0)
+        depth, ids = _render(cam)
+        present = [iid for iid in sorted(labels) if (ids == iid).sum() > 0]
+        seg = Segmentation(masks=np.stack([ids == iid for iid in present]),
+                           embeddings=emb[[iid - 1 for iid in present]], scores=np.full(len(present), 0.9, np.float32))
+        write_frame(directory, Frame(index=i, rgb=np.zeros((120, 160, 3), np.uint8), depth=depth, pose=_pose(cam),
+                                     segmentation=seg, instance_ids=ids))
+    grid = GridSpec(cell_size=0.05, origin=(0.0, 0.0), height=50, width=70)
+    ys, xs = (np.mgrid[0:grid.height, 0:grid.width] + 0.5) * 0.05
+    flat, owner, top = [], [], []
+    for iid, _label, (cx, cy), (dx, dy), _z0, z1 in BOXES:
+        cells = np.flatnonzero(((np.abs(xs - cx) <= dx / 2) & (np.abs(ys - cy) <= dy / 2)).ravel())
+        flat.append(cells), owner.append(np.full(len(cells), iid)), top.append(np.full(len(cells), z1))
+    cells = InstanceGrid.from_entries(np.concatenate(flat), np.concatenate(owner), np.concatenate(top))
+    objects = [{"id": iid, "label": lab, "center": [cx, cy, (z0 + z1) / 2], "size": [dx, dy, z1 - z0],
+                "structural": False, "on": 1 if iid == 2 else None}
+               for iid, lab, (cx, cy), (dx, dy), z0, z1 in BOXES]
+    room = {"id": 1, "label": "living room", "polygon": [[0, 0], [3.5, 0], [3.5, 2.5], [0, 2.5]]}
+    for o in objects:
+        o["room"] = 1
+    GroundTruth("tiny", objects, [room], grid, np.ones((50, 70), np.int32), np.zeros((50, 70), bool),
+                cells).save(directory)
+    return directory
+
+
+@pytest.fixture(scope="module")
+def tiny(tmp_path_factory) -> Path:
+    return write_tiny_world(tmp_path_factory.mktemp("tiny"))
+
+
+def test_build_map_keeps_the_cup_on_the_table_and_scores_perfectly(tiny, tmp_path, capsys):
+    out = tmp_path / "tiny.iesm"
+    assert run(["build-map", str(tiny), "-o", str(out)]) == 0
+    scene = load_map(out)
+    assert sorted(i.label for i in scene.instances) == ["chair", "cup", "table"]
+    assert [i.id for i in scene.instances] == [1, 2, 3]
+    cup = next(i for i in scene.instances if i.label == "cup")
+    table = next(i for i in scene.instances if i.label == "table")
+    assert cup.mean_height == pytest.approx(0.87, abs=0.01) and table.mean_height == pytest.approx(0.75, abs=0.01)
+    # multi-occupancy: the table is kept under the cup
+    assert scene.occupancy.multi_occupancy_cells > 0
+    assert table.weight == 4 and sorted(table.frames) == [0, 1, 2, 3]
+    obs = scene.observations
+    assert obs.shape[1] == 5 and set(obs[:, 0].astype(int)) == {1, 2, 3}
+    capsys.readouterr()
+    assert run(["eval-map", str(out), "--gt", str(tiny), "--json"]) == 0
+    r = json.loads(capsys.readouterr().out)
+    assert (r["n_pred"], r["n_gt"], r["n_matched"], r["instance_diff"]) == (3, 3, 3, 0)
+    assert r["auc_top"]["match"] == pytest.approx(1 - 0.5 / len(CATEGORIES))   # every rank 1: f = 1 from k = 1
+    assert r["topdown"]["acc"] > 0.85 and r["stacked"]["n_gt"] == 2 and r["stacked"]["top1_recall"] == 1.0
+    assert set(r["small"]) >= {"auc_top", "instance_diff", "n_pred", "n_gt"}
+    assert run(["eval-map", str(out), "--gt", str(tiny)]) == 0
+    assert "AUC^top" in capsys.readouterr().out
+
+
+def test_no_second_pass_flag(tiny, tmp_path):
+    out = tmp_path / "first.iesm"
+    assert run(["build-map", str(tiny), "-o", str(out), "--no-second-pass"]) == 0
+    assert load_map(out).meta["second_pass"] == "false"
+
+
+def test_observations_round_trip_and_old_files_still_load(tiny, tmp_path, apartment_path):
+    assert run(["build-map", str(tiny), "-o", str(tmp_path / "a.iesm")]) == 0
+    scene = load_map(tmp_path / "a.iesm")
+    save_map(scene, tmp_path / "b.iesm")
+    again = load_map(tmp_path / "b.iesm")
+    assert again == scene and np.array_equal(again.observations, scene.observations)
+    assert load_map(apartment_path).observations is None
+    with pytest.raises(ValueError, match="unknown instance ids"):
+        scene.model_validate({**dict(scene), "observations": np.array([[99, 0, 0, 10, 0.5]])})
+
+
+def _copy(src: Path, dst: Path) -> Path:
+    import shutil
+
+    shutil.copytree(src, dst)
+    return dst
+
+
+@pytest.mark.parametrize("damage, culprit", [
+    (lambda d: (d / "frames" / "000002.depth.png").unlink(), "000002.depth.png"),
+    (lambda d: (d / "frames" / "000001.pose.txt").write_text("1 0 0\n0 1 0\n0 0 1\n"), "000001.pose.txt"),
+    (lambda d: (d / "intrinsics.json").write_text(json.dumps({**json.loads((d / "intrinsics.json").read_text()),
+                                                              "fx": 0})), "intrinsics.json"),
+    (lambda d: np.savez_compressed(d / "frames" / "000003.seg.npz", masks=np.zeros((1, 10, 10), bool),
+                                   embeddings=np.zeros((1, 384), np.float32), scores=np.ones(1, np.float32)),
+     "000003.seg.npz"),
+])
+def test_bad_frames_give_one_line_naming_the_file_and_no_map(tiny, tmp_path, capsys, damage, culprit):
+    d = _copy(tiny, tmp_path / "frames")
+    damage(d)
+    out = tmp_path / "bad.iesm"
+    capsys.readouterr()
+    assert run(["build-map", str(d), "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("iesm: error:") and culprit in err[0]
+    assert not out.exists() and not list(tmp_path.glob(".bad.iesm*"))
