@@ -29,12 +29,13 @@ def write_spec(directory, name, desc="", focus="", fields=("label",), title="T")
     return path
 
 
-def test_shipped_experts_are_the_papers_four():
+def test_shipped_experts_are_the_papers_four_and_spatial():
     specs = load_experts(plugins=False)
-    assert set(specs) == {"obj", "room", "desc", "abs"}
-    # one ranking skeleton: every expert sees every field, the focus line tells them apart
-    assert all(set(s.fields) >= {"id", "label", "room", "caption", "tags"} for s in specs.values())
-    assert len({s.focus for s in specs.values()}) == 4
+    assert set(specs) == {"obj", "room", "desc", "abs", "spatial"}
+    # one ranking skeleton: every paper expert sees every field, the focus line tells them apart
+    assert all(set(s.fields) >= {"id", "label", "room", "caption", "tags"} for n, s in specs.items() if n != "spatial")
+    assert {"center", "size", "z_range", "on", "under"} <= set(specs["spatial"].fields)
+    assert len({s.focus for s in specs.values()}) == 5
     assert all(s.fields[0] == "id" and s.gate_description and s.focus for s in specs.values())
 
 
@@ -44,7 +45,7 @@ def test_user_directory_overrides_by_name_and_adds(tmp_path):
     write_spec(d, "height", fields=["label"])
     specs = load_experts([d], plugins=False)
     assert specs["obj"].focus == "my own object focus" and specs["obj"].fields == ("id", "label", "tags")
-    assert list(specs)[-1] == "height" and len(specs) == 5
+    assert list(specs)[-1] == "height" and len(specs) == 6
 
 
 @pytest.mark.parametrize("body, field", [

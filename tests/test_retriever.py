@@ -87,6 +87,7 @@ def ranked(*ids):
 
 
 def make(store, experts_dir, script, **kwargs):
+    kwargs.setdefault("method", "experts:" + ",".join(sorted(EXPERTS)))  # the scripted four, not the shipped spatial
     return Retriever(store, provider=FunctionModel(script), experts_dirs=[experts_dir], **kwargs)
 
 

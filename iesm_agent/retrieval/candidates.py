@@ -94,3 +94,22 @@ def select_candidates(store: Any, query: str, max_candidates: int, target: int |
         ids = tuple(int(i) for i in index.ids[order[:max_candidates]])
     return Candidates(ids=ids, considered=len(instances),
                       recall=None if target is None else target in ids)
+
+
+def reference_ids(store: Any, query: str, exclude: tuple[int, ...], limit: int = 60) -> tuple[int, ...]:
+    """Instances outside `exclude` (the candidates) whose category the query names anywhere,
+    landmarks included ("the cup on the table": tables), best fit first, at most `limit`; empty
+    when every instance is a candidate. Spatial prompts show them as reference objects."""
+    instances = store.scene.instances
+    if len(instances) <= len(exclude):
+        return ()
+    index = _INDEXES.get(store)
+    if index is None:
+        index = _INDEXES[store] = _LabelIndex(instances)
+    wanted = _wanted(query)
+    if not wanted:
+        return ()
+    fit = np.array([_fit(wanted, _denoted(*key)) for key in index.keys])[index.group]
+    keep = (fit >= 0.3) & ~np.isin(index.ids, np.array(exclude, np.int64))
+    order = np.lexsort((index.ids, -fit))
+    return tuple(int(i) for i in index.ids[order][keep[order]][:limit])

@@ -17,7 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from ..errors import IesmError
 from ..resources import resource_dir
-from ..store.mapstore import CANDIDATE_FIELDS
+from ..store.mapstore import VIEW_FIELDS
 
 ENTRY_POINT_GROUP = "iesm_agent.experts"
 
@@ -37,9 +37,9 @@ class ExpertSpec(BaseModel):
     @field_validator("fields")
     @classmethod
     def _known_fields(cls, fields: tuple[str, ...]) -> tuple[str, ...]:
-        unknown = [f for f in fields if f not in CANDIDATE_FIELDS]
+        unknown = [f for f in fields if f not in VIEW_FIELDS]
         if unknown:
-            raise ValueError(f"unknown candidate field(s) {unknown}; allowed: {list(CANDIDATE_FIELDS)}")
+            raise ValueError(f"unknown candidate field(s) {unknown}; allowed: {list(VIEW_FIELDS)}")
         return ("id",) + tuple(f for f in dict.fromkeys(fields) if f != "id")
 
 

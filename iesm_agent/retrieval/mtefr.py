@@ -2,7 +2,8 @@
 
 By default the gate and every expert run concurrently (one model round trip per query). With
 `skip_below` set (cost-saving mode) the gate runs first; only experts whose weight reaches the
-threshold are called, and they get the gate's hints. A single expert needs no gate (weight 1).
+threshold are called, and they get the gate's hints. A single expert needs no gate (weight 1);
+with `gate=False` (method `mtefr-uniform`) no gate is asked and every expert weighs the same.
 """
 
 from __future__ import annotations
@@ -21,8 +22,10 @@ Views = Callable[[Sequence[str]], list[dict]]
 
 
 def _expert_call(session: Session, spec: ExpertSpec, query: str, views: Views, kappa: int, hint: str = ""):
+    references = getattr(views, "references", None)  # landmarks outside the candidates (spatial.j2)
     messages = session.render(spec.template, query=query, focus=spec.focus, hint=hint,
-                              candidates=views(spec.fields), kappa=kappa)
+                              candidates=views(spec.fields), kappa=kappa,
+                              references=references(spec.fields) if references else [])
     return session.call(spec.name, spec.template, messages, ranking_schema(kappa))
 
 
@@ -39,16 +42,17 @@ def _gate_weights(session: Session, reply: Reply, names: list[str]) -> tuple[dic
 
 
 async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], candidate_ids: Sequence[int],
-                    views: Views, config: RetrievalConfig) -> Outcome:
-    """Gate + experts + fusion over `candidate_ids`; model misbehaviour is recorded, never raised."""
+                    views: Views, config: RetrievalConfig, gate: bool = True) -> Outcome:
+    """Gate + experts + fusion over `candidate_ids` (uniform weights without the gate when
+    `gate` is False); model misbehaviour is recorded, never raised."""
     kappa, names = config.kappa, [s.name for s in specs]
     gate_messages = None
-    if len(specs) > 1:
+    if len(specs) > 1 and gate:
         experts = [{"name": s.name, "gate_description": s.gate_description} for s in specs]
         gate_messages = session.render("gate.j2", query=query, experts=experts)
 
     if gate_messages is None:
-        weights, hints, active = {names[0]: 1.0}, {}, list(specs)
+        weights, hints, active = {name: 1.0 / len(names) for name in names}, {}, list(specs)
         replies = await asyncio.gather(*(_expert_call(session, s, query, views, kappa) for s in active))
     elif config.skip_below is None:
         active = list(specs)

@@ -1,7 +1,9 @@
 """`Retriever`: one query in, one `RetrievalResult` out, whatever the model does.
 
-Methods: `mtefr` (gate + all experts + fusion), `experts:<a>,<b>` (MTEFR restricted to those
-experts, the paper's ablations), `spr` (single pass over all fields) and `keyword` (HOV-SG style).
+Methods: `mtefr` (gate + all experts + fusion), `mtefr-uniform` (the same experts fused with
+uniform weights: the gate switched off, to measure what it adds), `experts:<a>,<b>` (MTEFR
+restricted to those experts, the paper's ablations), `spr` (single pass over all fields) and
+`keyword` (HOV-SG style).
 """
 
 from __future__ import annotations
@@ -19,13 +21,13 @@ from ..prompting import Fenced, FencedList, PromptLibrary
 from ..providers import Model, get_model
 from .baselines import run_keyword, run_spr
 from .calls import Outcome, Session
-from .candidates import Candidates, select_candidates
+from .candidates import Candidates, reference_ids, select_candidates
 from .experts import ExpertSpec, load_experts
 from .fusion import fuse
 from .mtefr import run_mtefr
 from .result import RetrievalResult
 
-METHODS = ("mtefr", "spr", "keyword", "experts:<name>,<name>")
+METHODS = ("mtefr", "mtefr-uniform", "spr", "keyword", "experts:<name>,<name>")
 #: ids whose display names a result carries besides the experts' picks
 _NAMED_TOP = 5
 
@@ -35,7 +37,7 @@ def resolve_method(method: str, registry: dict[str, ExpertSpec]) -> tuple[str, l
     method = method.strip()
     if method in ("spr", "keyword"):
         return method, []
-    if method == "mtefr":
+    if method in ("mtefr", "mtefr-uniform"):
         if not registry:
             raise IesmError("no expert specs found", "experts")
         return method, list(registry.values())
@@ -65,10 +67,17 @@ class Retriever:
         self._views: dict[tuple[str, ...], dict[int, dict]] = {}
         self._template_hashes: dict[str, str] = {}
 
-    def _candidate_views(self, ids: Sequence[int]):
+    def _candidate_views(self, ids: Sequence[int], query: str = ""):
         """views(fields) -> the candidates' views with those fields, built once per field set
-        for this query (experts sharing fields share one rendered candidate block)."""
+        for this query (experts sharing fields share one rendered candidate block);
+        views.references(fields) -> the same for `candidates.reference_ids` (spatial landmarks)."""
         built: dict[tuple[str, ...], FencedList] = {}
+        landmarks: list[tuple[int, ...]] = []
+
+        def references(fields: Sequence[str]) -> FencedList:
+            if not landmarks:
+                landmarks.append(reference_ids(self.store, query, tuple(ids)))
+            return FencedList(Fenced(self.store.candidate_view(i, list(fields))) for i in landmarks[0])
 
         def views(fields: Sequence[str]) -> FencedList:
             key = tuple(fields)
@@ -79,6 +88,7 @@ class Retriever:
                         cache[i] = Fenced(self.store.candidate_view(i, list(fields)))
                 built[key] = FencedList(cache[i] for i in ids)
             return built[key]
+        views.references = references
         return views
 
     async def aask(self, query: str, *, target: int | None = None) -> RetrievalResult:
@@ -86,7 +96,7 @@ class Retriever:
         started = time.perf_counter()
         candidates = select_candidates(self.store, query, self.config.max_candidates, target)
         session = Session(self.model, self.prompts, self._template_hashes)
-        views = self._candidate_views(candidates.ids)
+        views = self._candidate_views(candidates.ids, query)
         if self.method == "keyword":
             outcome = await run_keyword(session, self.store, query, self.config)
         elif not candidates.ids:
@@ -94,7 +104,8 @@ class Retriever:
         elif self.method == "spr":
             outcome = await run_spr(session, query, candidates.ids, views, self.config)
         else:
-            outcome = await run_mtefr(session, query, self.experts, candidates.ids, views, self.config)
+            outcome = await run_mtefr(session, query, self.experts, candidates.ids, views, self.config,
+                                      gate=self.method != "mtefr-uniform")
         return self._result(query, outcome, session, candidates, target, started)
 
     def ask(self, query: str, *, target: int | None = None) -> RetrievalResult:

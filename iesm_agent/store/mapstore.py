@@ -22,12 +22,18 @@ import numpy as np
 from rapidfuzz import fuzz, process, utils
 
 from ..errors import IesmError
+from .geometry import Boxes, describe_pair, is_under, rests_on
 from .model import SceneMap
 from .tools import function_schema
 
 CANDIDATE_FIELDS = ("id", "label", "alt_labels", "room", "caption", "tags")
+#: geometry an expert spec may request: box `center` [x, y, z] and `size` [dx, dy, dz] (m),
+#: `z_range` [bottom, top] (m), `on` / `under`: ids of the instances it rests on / lies under
+#: among those sharing its grid cells (multi-occupancy)
+GEOMETRY_FIELDS = ("center", "size", "z_range", "on", "under")
+VIEW_FIELDS = CANDIDATE_FIELDS + GEOMETRY_FIELDS
 TOOLS = ("list_categories", "list_rooms", "find_instances", "get_instance", "instances_near",
-         "instances_at", "stacked_with", "search")
+         "instances_at", "stacked_with", "search", "relate")
 STOPWORDS = frozenset(
     "a an the in on of to at by for from with and or is are be it its this that these those my your our "
     "me i you we please go find show take get where which what one there here near next some".split())
@@ -80,6 +86,8 @@ class MapStore:
         self._encoder: Any = _UNSET
         self._query_vecs: dict[str, np.ndarray] = {}
         self._token_hits: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+        self._boxes: Optional[Boxes] = None
+        self._geometry: dict[int, dict[str, Any]] = {}
 
     @classmethod
     def load(cls, path: Union[str, Path]) -> "MapStore":
@@ -419,16 +427,85 @@ class MapStore:
 
     def candidate_view(self, instance_id: int, fields: tuple[str, ...] | list[str] = CANDIDATE_FIELDS) -> dict:
         """The fields of one instance an expert may see (`id` always included)."""
-        unknown = [f for f in fields if f not in CANDIDATE_FIELDS]
+        unknown = [f for f in fields if f not in VIEW_FIELDS]
         if unknown:
-            raise IesmError(f"unknown candidate field(s) {unknown}; known: {', '.join(CANDIDATE_FIELDS)}",
+            raise IesmError(f"unknown candidate field(s) {unknown}; known: {', '.join(VIEW_FIELDS)}",
                             None, "fields")
-        view = self._views[self._check_id(instance_id)]
+        row = self._check_id(instance_id)
+        view = self._views[row]
         out = {"id": view["id"]}
         for f in fields:
+            if f in GEOMETRY_FIELDS:
+                out[f] = list(self._geometry_of(row)[f])
+                continue
             value = view[f]
             out[f] = list(value) if f == "alt_labels" else dict(value) if f == "tags" else value
         return out
+
+    # ---------------------------------------------------------------- geometry
+    @property
+    def boxes(self) -> Boxes:
+        """Axis-aligned boxes of all instances, scene order (computed once). Footprint: the extent
+        of the instance's grid cells (its centroid when it has none); top: the highest per-cell
+        top (else the mean height); bottom: 2 * mean height - top, clipped to [0, top] (exact for
+        imported boxes, whose mean height is the box centre)."""
+        if self._boxes is None:
+            half = self.scene.grid.cell_size / 2
+            cen = np.array([inst.centroid or (np.nan, np.nan, np.nan) for inst in self.scene.instances],
+                           np.float64).reshape(self._n, 3)
+            mean = np.array([np.nan if inst.mean_height is None else inst.mean_height
+                             for inst in self.scene.instances], np.float64)
+            lo, hi = cen[:, :2].copy(), cen[:, :2].copy()
+            top = np.full(self._n, np.nan)
+            has = self._e_span[:, 1] > self._e_span[:, 0] if self._n else np.zeros(0, bool)
+            if has.any():
+                starts = self._e_span[has, 0]
+                lo[has] = np.minimum.reduceat(self._e_xy, starts) - half
+                hi[has] = np.maximum.reduceat(self._e_xy, starts) + half
+                top[has] = np.fmax.reduceat(self._e_top.astype(np.float64), starts)
+            mean = np.where(np.isnan(mean), cen[:, 2], mean)
+            top = np.where(np.isnan(top), mean, top)
+            top = np.nan_to_num(top, nan=0.0)
+            bottom = np.where(np.isnan(mean), 0.0, np.clip(2 * np.nan_to_num(mean) - top, 0.0, None))
+            bottom = np.minimum(bottom, top)
+            lo, hi = np.nan_to_num(lo), np.nan_to_num(hi)
+            self._boxes = Boxes(self._ids, np.column_stack([lo, bottom]), np.column_stack([hi, top]))
+        return self._boxes
+
+    def _shared_rows(self, row: int) -> tuple[np.ndarray, np.ndarray]:
+        """(rows, shared cell counts) of the instances sharing grid cells with `row`."""
+        s, e = self._e_span[row]
+        shared = np.isin(self._e_cell, self._e_cell[s:e]) & (self._e_row != row)
+        return np.unique(self._e_row[shared], return_counts=True)
+
+    def _geometry_of(self, row: int) -> dict[str, Any]:
+        """Geometry fields of one instance (see `GEOMETRY_FIELDS`), cached; lengths rounded to cm."""
+        geo = self._geometry.get(row)
+        if geo is None:
+            boxes = self.boxes
+            me = boxes.take([row])
+            others, _ = self._shared_rows(row)
+            near = boxes.take(others)
+            geo = {"center": np.round(me.center[0], 2).tolist(), "size": np.round(me.size[0], 2).tolist(),
+                   "z_range": np.round([me.lo[0, 2], me.hi[0, 2]], 2).tolist(),
+                   "on": sorted(near.ids[rests_on(me, near)[0]].tolist()),
+                   "under": sorted(near.ids[is_under(me, near)[0]].tolist())}
+            self._geometry[row] = geo
+        return geo
+
+    def relate(self, a: int, b: int) -> dict:
+        """Spatial relation of instance a to instance b: vertical relation (on, supports, under,
+        above, below, level), centre distance and footprint gap in metres, whether they are near,
+        a's compass direction from b (x east, y north), height difference and shared grid cells.
+
+        Args:
+            a: the instance id whose relation is described
+            b: the reference instance id
+        """
+        ra, rb = self._check_id(a), self._check_id(b)
+        rows, counts = self._shared_rows(ra)
+        shared = int(counts[rows == rb].sum())
+        return describe_pair(self.boxes.take([ra]), self.boxes.take([rb]), shared)
 
     def tool_specs(self) -> list[dict]:
         """JSON schemas ({"name", "description", "parameters"}) of the public tools."""

@@ -13,7 +13,7 @@ from typing import Any
 
 from ...embeddings import encoder_name, get_encoder
 from ..base import Capabilities, ChatOptions, Completion, Message, Model, Usage
-from . import tasks
+from . import spatial, tasks
 from .prompt import read_prompt
 
 
@@ -35,7 +35,9 @@ class OfflineModel(Model):
         """The reply object for `messages`."""
         prompt = read_prompt(messages)
         if prompt.task == "gate":
-            return tasks.gate(prompt)
+            return spatial.weigh(prompt, tasks.gate(prompt))
+        if prompt.task == "rank" and spatial.SPATIAL_MARKER in prompt.instructions:
+            return spatial.rank(prompt)
         if prompt.task == "rank":
             return tasks.rank(prompt, self.encoder)
         if prompt.task == "keyword":

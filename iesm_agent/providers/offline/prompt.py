@@ -26,6 +26,8 @@ class Prompt:
     task: str                                  # "gate" | "rank" | "keyword" | "unknown"
     query: str = ""
     candidate_lines: list[str] = field(default_factory=list)  # one JSON object per line
+    reference_lines: list[str] = field(default_factory=list)  # landmarks outside the candidates (spatial.j2)
+    instructions: str = ""                     # the prompt text outside the fenced data
     experts: list[dict] = field(default_factory=list)
     focus: str = ""
     hint: str = ""
@@ -50,6 +52,8 @@ def read_prompt(messages: list[Message]) -> Prompt:
     if kappa:
         prompt.kappa = max(1, int(kappa.group(1)))
     prompt.candidate_lines = _lines(text, "candidates")
+    prompt.reference_lines = _lines(text, "references")
+    prompt.instructions = instructions
     prompt.experts = [e for e in _json_objects(_lines(text, "experts")) if isinstance(e.get("name"), str)]
     return prompt
 
@@ -66,7 +70,7 @@ def focus_role(focus: str) -> str:
     return best
 
 
-_FENCES = re.compile(r"<(query|hint|candidates|experts)>.*?</\1>", re.S)
+_FENCES = re.compile(r"<(query|hint|candidates|references|experts)>.*?</\1>", re.S)
 
 
 def _without_fences(text: str) -> str:

@@ -1,0 +1,395 @@
+"""The offline model's spatial-relation expert (`prompts/spatial.j2`) and its gate weighting.
+
+It reads a referring expression ("the cup on the kitchen table", "the chair closest to the
+window", "the smaller of the two lamps", "facing the bed, the nightstand on the left") into a
+target kind, colour/material words and relations to landmark categories, then scores the
+candidates of the target kind from the geometry fenced in the prompt (`center`, `size`,
+`z_range`, `on`, `under`), with landmarks found by category among the candidates and the
+reference objects. No relation, no target, or a landmark the map lacks: an empty ranking.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ...lexicon import load_lexicon
+from ...store import geometry as geo
+from ...understanding import candidate_from_line, label_concepts, room_of
+from .prompt import Prompt
+
+#: words in spatial.j2's system block that make a ranking prompt a spatial one
+SPATIAL_MARKER = "spatial-relation expert"
+#: words in an expert's gate description that make the gate score it by the query's relations
+GATE_MARKER = "spatial relations"
+#: gate score of the other experts when the query picks its target by a relation
+_OTHERS_CAP = 1
+
+_CUES: dict[tuple[str, ...], str] = {
+    ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
+    ("resting", "on"): "on", ("under",): "under", ("underneath",): "under", ("beneath",): "under",
+    ("below",): "below", ("above",): "above", ("over",): "above", ("next", "to"): "near",
+    ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
+    ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
+    ("closer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
+    ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
+    ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
+    ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
+    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing",
+    ("looking", "at"): "facing", ("from",): "from",
+}
+_EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
+             "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
+             "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
+             "higher": "high", "lowest": "low", "lower": "low", "widest": "wide", "wider": "wide",
+             "longest": "wide", "longer": "wide"}
+_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
+             "fifth": 5, "5th": 5, "last": -1}
+_LANDMARK_KINDS = {"on", "under", "below", "above", "near", "closest", "farthest", "between", "facing",
+                   "left", "right", "front", "behind", "from"}
+_WALL_WORDS = {"wall", "walls"}
+
+
+@dataclass
+class Relation:
+    """One relation: `kind` (a `_CUES` value, "extreme" or "ordinal"), landmark categories
+    (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
+    high/low/wide; ordinal: side or "landmark"), `order` (1-based, -1 = last)."""
+
+    kind: str
+    landmarks: list[tuple[str, ...]] = field(default_factory=list)
+    landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
+    value: str = ""
+    order: int = 0
+
+
+@dataclass
+class SpatialQuery:
+    """A referring expression: target categories (empty = unnamed), its colour/material words,
+    the relations and the viewpoint landmark ("facing the bed")."""
+
+    target: tuple[str, ...] = ()
+    attrs: tuple[tuple[str, str], ...] = ()
+    relations: list[Relation] = field(default_factory=list)
+    facing: tuple[str, ...] = ()
+
+    @property
+    def words(self) -> str:
+        return " ".join(r.kind if r.kind not in ("extreme", "ordinal") else r.value or r.kind for r in self.relations)
+
+
+# -- reading the query -----------------------------------------------------------------------
+def parse_query(text: str) -> SpatialQuery:
+    """The spatial reading of `text` (no relations when it states none)."""
+    lex = load_lexicon()
+    toks = [t for t in lex.tokens(text) if t not in lex.words["skip"] or t in ("one",)]
+    lemmas = [lex.lemma(t) for t in toks]
+    spans = lex.scan(lemmas)
+    cat_at = {s.start: s for s in spans if s.has("cat") and not s.has("room")}
+    attr_at = {s.end: s for s in spans if any(k in ("color", "material") for k, _ in s.kinds)}
+    out = SpatialQuery()
+    used: set[int] = set()  # starts of cat spans taken as landmarks
+
+    def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
+        found, end = [], start
+        while end in attr_at:
+            s = attr_at[end]
+            found += [(k, v) for k, v in s.kinds if k in ("color", "material")]
+            end = s.start
+        return tuple(found)
+
+    def next_cat(pos: int, stop_at: str | None = None) -> int | None:
+        for j in range(pos, len(lemmas)):
+            if stop_at and lemmas[j] == stop_at and j > pos:
+                return None
+            if j in cat_at and j not in used:
+                return j
+        return None
+
+    def landmark(rel: Relation, pos: int) -> bool:
+        j = next_cat(pos)
+        if j is None:
+            return False
+        used.add(j)
+        rel.landmarks.append(tuple(c for c in cat_at[j].values("cat")))
+        rel.landmark_attrs.append(attrs_before(j))
+        return True
+
+    i = 0
+    pending_ordinal: Relation | None = None
+    while i < len(lemmas):
+        if i in cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
+            i = cat_at[i].end
+            continue
+        word = toks[i]
+        if word in _EXTREMES:
+            out.relations.append(Relation("extreme", value=_EXTREMES[word]))
+            i += 1
+            continue
+        if word in _ORDINALS:
+            pending_ordinal = Relation("ordinal", order=_ORDINALS[word], value="left")
+            out.relations.append(pending_ordinal)
+            i += 1
+            continue
+        cue = next(((c, k) for c, k in sorted(_CUES.items(), key=lambda kv: -len(kv[0]))
+                    if tuple(toks[i:i + len(c)]) == c), None)
+        if cue is None:
+            i += 1
+            continue
+        words, kind = cue
+        nxt = toks[i + len(words)] if i + len(words) < len(toks) else ""
+        i += len(words)
+        if kind == "on" and nxt in ("left", "right", "top"):
+            continue  # "on the left": the side word is the relation
+        if kind in ("on", "wall") and nxt in _WALL_WORDS | {"wall"}:
+            out.relations.append(Relation("wall"))
+            i += 1
+            continue
+        if kind == "from" and pending_ordinal is not None:
+            if nxt in ("left", "right"):
+                pending_ordinal.value = nxt
+            elif landmark(pending_ordinal, i):
+                pending_ordinal.value = "landmark"
+            continue
+        if kind == "from":
+            continue
+        if kind == "facing":
+            j = next_cat(i)
+            if j is not None:
+                used.add(j)
+                out.facing = tuple(cat_at[j].values("cat"))
+            continue
+        if kind in ("left", "right", "front", "behind"):
+            rel = Relation(kind)
+            if nxt == "of":
+                landmark(rel, i)
+            elif kind == "front" and toks[i - 2:i - 1] == ["in"]:
+                landmark(rel, i)
+            out.relations.append(rel)
+            continue
+        if kind in ("closest", "farthest"):
+            rel = Relation(kind)
+            anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
+            if anchor is None or not landmark(rel, anchor):
+                landmark(rel, i)
+            out.relations.append(rel)
+            continue
+        rel = Relation(kind)
+        if kind in _LANDMARK_KINDS:
+            if not landmark(rel, i):
+                continue  # "the one on top", "over there": nothing to relate to
+            if kind == "between":
+                landmark(rel, i)
+        out.relations.append(rel)
+    target = next((j for j in sorted(cat_at) if j not in used), None)
+    if target is not None:
+        out.target = tuple(cat_at[target].values("cat"))
+        out.attrs = attrs_before(target)
+    return out
+
+
+# -- ranking ---------------------------------------------------------------------------------
+@dataclass
+class _Scene:
+    """The geometry the prompt shows: boxes of candidates and references, labels, rooms."""
+
+    boxes: geo.Boxes
+    concepts: list[tuple[tuple[str, float], ...]]
+    attrs: list[frozenset]
+    rooms: list[str | None]
+    on: list[frozenset[int]]
+    under: list[frozenset[int]]
+    is_candidate: np.ndarray
+
+
+def _read_scene(prompt: Prompt) -> _Scene:
+    """Candidates then references with geometry, each id once (the first line wins)."""
+    by_id: dict[int, tuple[dict, bool]] = {}
+    for lines, is_cand in ((prompt.candidate_lines, True), (prompt.reference_lines, False)):
+        for line in lines:
+            try:
+                data = json.loads(line)
+            except ValueError:
+                continue
+            if isinstance(data, dict) and isinstance(data.get("id"), int) and "center" in data:
+                by_id.setdefault(data["id"], (data, is_cand))
+    boxes = geo.Boxes.from_views(v for v, _ in by_id.values())
+    keep = [by_id[int(i)] for i in boxes.ids]
+
+    def ids(value) -> frozenset[int]:
+        return frozenset(x for x in value if isinstance(x, int)) if isinstance(value, list) else frozenset()
+
+    records = [candidate_from_line(json.dumps({"id": v["id"], "label": v.get("label"), "tags": v.get("tags")}))
+               for v, _ in keep]
+    return _Scene(boxes=boxes,
+                  concepts=[label_concepts(str(v.get("label") or "")) for v, _ in keep],
+                  attrs=[r[1].attrs if r else frozenset() for r in records],
+                  rooms=[room_of(str(v["room"])) if v.get("room") else None for v, _ in keep],
+                  on=[ids(v.get("on")) for v, _ in keep], under=[ids(v.get("under")) for v, _ in keep],
+                  is_candidate=np.array([c for _, c in keep], bool))
+
+
+def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...]) -> np.ndarray:
+    """(N,) bool: instances of one of `cats` (or of a more general kind when none is: "kitchen
+    table" finds a "table"), narrowed to those matching `attrs` when any does."""
+    lex = load_lexicon()
+    fit = np.array([max((w * lex.concept_sim(q, c) for c, w in concepts for q in cats), default=0.0)
+                    for concepts in scene.concepts])
+    kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6
+    if attrs and kind.any():
+        match = kind & np.array([all(any(k == kk and lex.attr_sim(k, v, vv) >= 0.5 for kk, vv in a)
+                                     for k, v in attrs) for a in scene.attrs], bool)
+        if match.any():
+            return match
+    return kind
+
+
+def _extent(scene: _Scene, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """xy (lo, hi) of the objects in the rooms of `rows` (all objects when rooms are unknown)."""
+    rooms = {scene.rooms[r] for r in rows}
+    same = np.array([room in rooms for room in scene.rooms], bool) if None not in rooms else np.ones(len(scene.rooms), bool)
+    return scene.boxes.lo[same, :2].min(axis=0), scene.boxes.hi[same, :2].max(axis=0)
+
+
+def _rank_score(values: np.ndarray) -> np.ndarray:
+    """Higher value -> score near 1; ties share a score (dense ranks over distinct values)."""
+    if len(values) < 2:
+        return np.ones(len(values))
+    ranks = np.unique(np.round(-values, 3), return_inverse=True)[1]
+    return 1.0 - ranks / max(ranks.max(), 1)
+
+
+def _view(scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(viewer xy, unit view direction): from the middle of the room towards the facing landmark
+    (nearest to the targets) or towards the targets."""
+    lo, hi = _extent(scene, targets)
+    viewer = (lo + hi) / 2
+    tc = scene.boxes.center[targets, :2].mean(axis=0)
+    if len(facing):
+        f = facing[np.argmin(np.hypot(*(scene.boxes.center[facing, :2] - tc).T))]
+        look = scene.boxes.center[f, :2] - viewer
+    else:
+        look = tc - viewer
+    norm = float(np.hypot(*look))
+    return viewer, (look / norm if norm > 1e-6 else np.array([0.0, 1.0]))
+
+
+def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> np.ndarray | None:
+    """(len(targets),) scores in [0, 1]; None when a landmark is missing from the map."""
+    boxes = scene.boxes
+    tb = boxes.take(targets)
+    marks = []
+    for cats, attrs in zip(rel.landmarks, rel.landmark_attrs):
+        rows = np.flatnonzero(_of_kind(scene, cats, attrs))
+        if not len(rows):
+            return None
+        marks.append(boxes.take(rows))
+    kind = rel.kind
+    if kind in ("on", "under", "above", "below"):
+        lm = marks[0]
+        if kind == "on":
+            hit = geo.rests_on(tb, lm) | np.array([[int(i) in scene.on[t] for i in lm.ids] for t in targets])
+        elif kind == "under":
+            hit = geo.is_under(tb, lm) | np.array([[int(i) in scene.under[t] for i in lm.ids] for t in targets])
+        elif kind == "above":
+            hit = geo.is_above(tb, lm)
+        else:
+            hit = geo.is_above(lm, tb).T
+        near = np.exp(-geo.xy_gap(tb, lm).min(axis=1))
+        return np.where(hit.any(axis=1), 1.0, 0.15 * near)
+    if kind in ("near", "closest", "farthest"):
+        lm = marks[0]
+        gap = geo.xy_gap(tb, lm) + 0.25 * geo.center_distance(tb, lm)
+        gap = np.where(tb.ids[:, None] == lm.ids[None, :], np.inf, gap).min(axis=1)
+        if kind == "near":
+            return np.exp(-gap / geo.NEAR_GAP)
+        return _rank_score(-gap if kind == "closest" else gap)
+    if kind == "between":
+        if len(marks) < 2:
+            marks.append(marks[0])
+        return _rank_score(-geo.segment_distance(tb, marks[0], marks[1]))
+    if kind in ("corner", "middle", "wall"):
+        lo, hi = _extent(scene, targets)
+        c = tb.center[:, :2]
+        if kind == "middle":
+            return _rank_score(-np.hypot(*(c - (lo + hi) / 2).T))
+        edge = np.minimum(tb.lo[:, :2] - lo, hi - tb.hi[:, :2])  # (T, 2) distance to the x / y walls
+        return _rank_score(-(edge.max(axis=1) if kind == "corner" else edge.min(axis=1)))
+    if kind == "extreme":
+        size = tb.size
+        value = {"large": size.prod(axis=1), "small": -size.prod(axis=1), "tall": size[:, 2],
+                 "short": -size[:, 2], "high": tb.hi[:, 2] + tb.lo[:, 2], "low": -(tb.hi[:, 2] + tb.lo[:, 2]),
+                 "wide": size[:, :2].max(axis=1)}[rel.value]
+        return _rank_score(value)
+    viewer, look = _view(scene, targets, facing)
+    left = np.array([-look[1], look[0]])
+    if kind in ("left", "right", "front", "behind"):
+        axis = {"left": left, "right": -left, "front": -look, "behind": look}[kind]
+        if not marks:
+            return _rank_score(tb.center[:, :2] @ axis)
+        lm = marks[0]
+        offset = (tb.center[:, None, :2] - lm.center[None, :, :2]) @ axis  # (T, L) along the side
+        dist = geo.center_distance(tb, lm)
+        ok = (offset > 0.05) & (tb.ids[:, None] != lm.ids[None, :])
+        return np.where(ok, 1.0 / (1.0 + dist), 0.0).max(axis=1)
+    # ordinal: order along the side (or by distance to the landmark), pick the n-th
+    if rel.value == "landmark" and marks:
+        key = geo.center_distance(tb, marks[0]).min(axis=1)
+    else:
+        key = -(tb.center[:, :2] @ (left if rel.value == "left" else -left))
+    order = np.argsort(key, kind="stable")
+    pick = rel.order - 1 if rel.order > 0 else len(order) - 1
+    if pick >= len(order):
+        return np.zeros(len(order))
+    place = np.empty(len(order), np.int64)
+    place[order] = np.arange(len(order))
+    return 1.0 / (1.0 + np.abs(place - pick))
+
+
+def rank(prompt: Prompt) -> dict:
+    """Top-kappa candidate ids of the target kind by how well they satisfy the relations."""
+    empty = {"ranked_instance_ids": []}
+    sq = parse_query(prompt.query)
+    if not sq.relations:
+        return empty
+    scene = _read_scene(prompt)
+    if not len(scene.boxes):
+        return empty
+    if sq.target:
+        kind = _of_kind(scene, sq.target, sq.attrs)
+    else:  # "the one on the left": anything that is not a landmark
+        marks = [c for r in sq.relations for c in r.landmarks] + ([sq.facing] if sq.facing else [])
+        kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
+    targets = np.flatnonzero(kind & scene.is_candidate)
+    if not len(targets):
+        return empty
+    facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
+    total = np.zeros(len(targets))
+    for rel in sq.relations:
+        scores = _relation_scores(rel, scene, targets, facing)
+        if scores is None:
+            return empty  # a landmark the map lacks: no guess
+        total += scores
+    order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
+    return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
+
+
+# -- gate ------------------------------------------------------------------------------------
+def weigh(prompt: Prompt, reply: dict) -> dict:
+    """Adjust a gate reply for experts whose description declares spatial relations: 4 when the
+    query states a relation, comparison, order or viewpoint (then every other expert at most
+    `_OTHERS_CAP`, since a category, room or colour alone cannot pick among same-kind objects),
+    else 0."""
+    spatial = [e["name"] for e in prompt.experts if GATE_MARKER in str(e.get("gate_description", "")).lower()]
+    if not spatial:
+        return reply
+    sq = parse_query(prompt.query)
+    scores, hints = dict(reply.get("scores", {})), dict(reply.get("hints", {}))
+    if sq.relations:
+        scores = {name: min(int(s), _OTHERS_CAP) for name, s in scores.items()}
+    for name in spatial:
+        scores[name] = 4 if sq.relations else 0
+        hints[name] = sq.words
+    return {"scores": scores, "hints": hints}
