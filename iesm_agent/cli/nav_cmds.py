@@ -1,0 +1,113 @@
+"""`iesm rooms` (room segmentation, per-instance rooms, obstacle map) and `iesm path` (plan a path
+to an instance)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from ..errors import IesmError
+
+
+def _parse_xy(text: str) -> tuple[float, float]:
+    try:
+        x, y = (float(v) for v in text.split(","))
+    except ValueError:
+        raise IesmError(f"expected X,Y in metres, got {text!r}", None, "--start") from None
+    if not all(map(lambda v: abs(v) < 1e6, (x, y))):
+        raise IesmError(f"expected finite X,Y in metres, got {text!r}", None, "--start")
+    return x, y
+
+
+def _load_cell_labels(path: Path, shape: tuple[int, int]):
+    """Per-cell labels from an .npz with `labels` (H, W) int and `names` (L,) str."""
+    import numpy as np
+
+    from ..rooms import CellLabels
+
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            labels, names = data["labels"], [str(n) for n in data["names"]]
+    except (OSError, ValueError, KeyError) as exc:
+        raise IesmError(f"not a readable cell-label npz with 'labels' and 'names' ({exc})", path) from None
+    if labels.shape != shape or labels.dtype.kind not in "iu":
+        raise IesmError(f"labels must be integer {shape} (the map grid), got {labels.dtype} {labels.shape}", path)
+    if labels.max(initial=-1) >= len(names) or labels.min(initial=-1) < -1:
+        raise IesmError(f"label indices must be -1 or below {len(names)} (the number of names)", path)
+    return CellLabels(labels.astype(np.int32), names)
+
+
+def register(app: typer.Typer) -> None:
+    @app.command("rooms")
+    def rooms_cmd(
+        map_path: Path = typer.Argument(..., metavar="MAP", help="a built .iesm map (iesm build-map)"),
+        output: Path = typer.Option(..., "-o", "--output", help="the .iesm file to write (may be MAP)"),
+        frames: Optional[Path] = typer.Option(None, "--frames",
+                                              help="simulator frame directory: simulated CLIP-like per-cell labels"),
+        cell_labels: Optional[Path] = typer.Option(None, "--cell-labels",
+                                                   help=".npz with per-cell labels (H, W) and names (real data)"),
+        split: bool = typer.Option(True, "--split/--no-split", help="contextual split of open-plan space"),
+        seed: int = typer.Option(0, "--seed", help="seed of the simulated labels"),
+    ) -> None:
+        """Segment rooms; store rooms, room map, each instance's room and the obstacle map."""
+        from ..rooms import RoomConfig, segment_rooms
+        from ..store import save_map
+        from ..store.refs import open_map
+
+        if (frames is None) == (cell_labels is None):
+            raise IesmError("give exactly one of --frames DIR or --cell-labels FILE.npz", None, "rooms")
+        if not output.parent.resolve().is_dir():
+            raise IesmError("output directory does not exist", output)
+        scene = open_map(map_path)
+        if frames is not None:
+            from ..rooms.sim_labels import ViewpointLabels
+
+            labels = ViewpointLabels(frames, seed=seed).cell_labels(scene.grid)
+        else:
+            labels = _load_cell_labels(cell_labels, (scene.grid.height, scene.grid.width))
+        result = segment_rooms(scene, labels, RoomConfig(split=split))
+        size = save_map(result, output)
+        rooms = ", ".join(f"{r.label} ({int((result.room_map == r.id).sum() * scene.grid.cell_size ** 2)} m2)"
+                          for r in result.rooms)
+        typer.echo(f"wrote {output} ({size} bytes): {len(result.rooms)} rooms: {rooms or '-'}; "
+                   f"{int(result.obstacles.sum())} obstacle cells; {result.meta['room_segmentation']}")
+
+    @app.command("path")
+    def path_cmd(
+        map_path: Path = typer.Argument(..., metavar="MAP", help="a .iesm map, a JSON map or a shipped map name"),
+        to: int = typer.Option(..., "--to", help="goal instance id"),
+        start: str = typer.Option(..., "--start", help="start X,Y in metres"),
+        png: Optional[Path] = typer.Option(None, "--png", help="draw the path into this PNG"),
+        robot_radius: float = typer.Option(0.2, "--robot-radius", help="obstacle inflation, metres"),
+        as_json: bool = typer.Option(False, "--json", help="print the result as JSON"),
+    ) -> None:
+        """Plan a path to an instance: length in metres, reachable or not (exit 1 when not)."""
+        from ..nav import PlanningGrid
+        from ..rooms import ObstacleConfig
+        from ..store.refs import open_map
+
+        xy = _parse_xy(start)
+        if png is not None and not png.parent.resolve().is_dir():
+            raise IesmError("output directory does not exist", png)
+        if robot_radius < 0:
+            raise IesmError("must not be negative", None, "--robot-radius")
+        planning = PlanningGrid(open_map(map_path), ObstacleConfig(robot_radius=robot_radius))
+        result = planning.plan(to, xy)
+        if result.status == "unknown_instance":
+            raise IesmError(result.message, map_path, "--to")
+        if png is not None:
+            from ..nav.render import render_path
+
+            render_path(planning, result, png)
+        if as_json:
+            typer.echo(json.dumps(result.model_dump(mode="json"), indent=2))
+        elif result.reachable:
+            typer.echo(f"reachable: {result.length_m:.2f} m to instance {to} in {len(result.waypoints) - 1} "
+                       f"straight legs; stops {result.goal_distance_m:.2f} m from it")
+        else:
+            typer.echo(f"not reachable ({result.status}): {result.message}")
+        if not result.reachable:
+            raise typer.Exit(1)

@@ -1,0 +1,56 @@
+"""PNG of a planned path: obstacles, the robot-radius margin, rooms, the goal instance and the path."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import IesmError
+from ..rooms.obstacles import cells_of
+from .planner import PathResult, PlanningGrid
+
+
+def render_path(planning: PlanningGrid, result: PathResult, path: str | Path, dpi: int = 120) -> None:
+    """Write the drawing of `result` on `planning`'s grid to `path` (PNG, atomically)."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as exc:
+        raise IesmError("drawing needs matplotlib: pip install 'iesm-agent[plots]'", None, "--png") from exc
+    scene, grid = planning.scene, planning.grid
+    image = np.ones((grid.height, grid.width, 3))
+    if scene.room_map is not None:
+        image[scene.room_map >= 0] = (0.93, 0.95, 1.0)
+    image[planning.blocked] = (0.82, 0.82, 0.82)
+    image[planning.obstacles] = (0.35, 0.35, 0.35)
+    if result.status != "unknown_instance":
+        image[cells_of(scene, [result.instance_id])] = (0.85, 0.1, 0.1)
+    extent = (grid.origin[0], grid.origin[0] + grid.width * grid.cell_size,
+              grid.origin[1], grid.origin[1] + grid.height * grid.cell_size)
+    fig, ax = plt.subplots(figsize=(8, max(3.0, 8 * grid.height / max(grid.width, 1))))
+    ax.imshow(image, origin="lower", extent=extent, interpolation="nearest")
+    if result.waypoints:
+        xs, ys = np.array(result.waypoints).T
+        ax.plot(xs, ys, "-", color="tab:blue", linewidth=2)
+    ax.plot(*result.start, "o", color="tab:blue", markersize=8)
+    title = (f"to instance {result.instance_id}: {result.length_m:.2f} m" if result.reachable
+             else f"to instance {result.instance_id}: {result.message}")
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    finally:
+        plt.close(fig)

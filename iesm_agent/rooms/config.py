@@ -1,0 +1,63 @@
+"""Parameters of room segmentation and of the obstacle map (metres unless stated)."""
+
+from __future__ import annotations
+
+from pydantic import BaseModel, ConfigDict, Field
+
+STRUCTURAL_LABELS = ("wall", "door", "doorframe", "door frame", "doorway", "window", "pillar", "column", "railing")
+LARGE_FIXED_LABELS = ("wardrobe", "closet", "bookshelf", "bookcase", "shelf", "cabinet", "kitchen cabinet",
+                      "refrigerator", "fridge", "counter", "kitchen counter", "kitchen island", "dresser")
+OBSTACLE_LABELS = STRUCTURAL_LABELS + LARGE_FIXED_LABELS + ("bed", "sofa", "couch", "table", "bathtub", "toilet",
+                                                            "sink", "stove", "oven", "washing machine", "piano")
+
+
+class ObstacleConfig(BaseModel):
+    """An instance blocks the robot if its mean height (m above the floor) lies in [h_min, h_max]
+    or its label is in `labels`; planning inflates obstacles by `robot_radius`."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    h_min: float = Field(0.05, ge=0)
+    h_max: float = Field(1.5, gt=0)
+    labels: tuple[str, ...] = OBSTACLE_LABELS
+    robot_radius: float = Field(0.2, ge=0)
+
+
+class RoomConfig(BaseModel):
+    """Room segmentation (paper Sec. 3.2 plus the contextual open-plan split).
+
+    Structural instances (`structural_labels`, and `large_fixed_labels` with a footprint of at least
+    `large_fixed_min_area` m^2) form the boundary mask; LSD segments shorter than `min_segment` are
+    dropped; collinear segments (angle <= `merge_angle_deg`, offset <= `merge_offset`) whose ends are
+    at most `merge_gap` apart are merged (this closes door gaps); the raster is drawn
+    `line_thickness` cells wide, dilated by `dilate` and closed by `close`. Free components smaller
+    than `min_room_area` m^2, or with less than `min_observed` of their cells observed, are not rooms.
+    The contextual split cuts a component of at least `split_min_area` m^2 along the axis-aligned line
+    that best separates its two main per-cell labels, when that line classifies at least
+    `split_purity` of their cells and beats the unsplit majority by `split_gain`; the runner-up label
+    must hold `split_min_share` of the two; `object_vote_weight` scales the votes of room-typical
+    objects (per footprint cell) added to the per-cell labels.
+    """
+
+    model_config = ConfigDict(extra="forbid")
+
+    structural_labels: tuple[str, ...] = STRUCTURAL_LABELS
+    large_fixed_labels: tuple[str, ...] = LARGE_FIXED_LABELS
+    large_fixed_min_area: float = Field(0.5, ge=0)
+    min_segment: float = Field(0.3, ge=0)
+    merge_angle_deg: float = Field(5.0, ge=0, le=90)
+    merge_offset: float = Field(0.15, ge=0)
+    merge_gap: float = Field(1.1, ge=0)
+    line_thickness: int = Field(2, ge=1)
+    dilate: float = Field(0.05, ge=0)
+    close: float = Field(0.25, ge=0)
+    min_room_area: float = Field(1.0, ge=0)
+    min_observed: float = Field(0.2, ge=0, le=1)
+    split: bool = True
+    split_min_area: float = Field(8.0, ge=0)
+    split_purity: float = Field(0.8, ge=0, le=1)
+    split_gain: float = Field(0.1, ge=0, le=1)
+    split_min_share: float = Field(0.2, ge=0, le=0.5)
+    split_max_depth: int = Field(3, ge=0)
+    object_vote_weight: float = Field(0.5, ge=0)
+    obstacles: ObstacleConfig = Field(default_factory=ObstacleConfig)

@@ -1,0 +1,158 @@
+"""Room segmentation (paper Sec. 3.2) with a contextual split for open-plan space.
+
+Free space = cells that are not boundary (LSD raster of the structural mask, or the structural
+mask itself) near observed space; its 4-connected components large and observed enough are room
+instances; an oversized component whose per-cell labels (plus room-typical objects) form two
+spatially separate clusters is cut along the axis-aligned line that separates them best; each room
+takes the majority per-cell label; the dilation margin is given back to the nearest room.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+
+from .boundaries import Boundaries, _disk, boundary_raster
+from .config import RoomConfig
+from .labels import CellLabels
+
+
+@dataclass
+class RoomSegmentation:
+    """`room_map` (H, W) int32 room id per cell (0..R-1), -1 none; `labels` the room type per id;
+    `components` free components kept before splitting; `splits` cuts made by the contextual split."""
+
+    room_map: np.ndarray
+    labels: list[str]
+    components: int
+    splits: int
+    boundaries: Boundaries
+    notes: list[str] = field(default_factory=list)
+
+
+def _split_line(mask: np.ndarray, ev_a: np.ndarray, ev_b: np.ndarray, cell_area: float,
+                config: RoomConfig) -> Optional[tuple[int, int]]:
+    """(axis, t): cut `mask` (h, w) before row/column t when that axis-aligned line separates the
+    evidence maps `ev_a`, `ev_b` (h, w) of two labels well enough; None otherwise."""
+    tot_a, tot_b = float(ev_a.sum()), float(ev_b.sum())
+    total = tot_a + tot_b
+    if total <= 0 or min(tot_a, tot_b) / total < config.split_min_share:
+        return None
+    unsplit = max(tot_a, tot_b) / total
+    best: tuple[float, int, int] | None = None
+    for axis in (0, 1):
+        other = 1 - axis
+        cum_a = np.cumsum(ev_a.sum(axis=other))[:-1]
+        cum_b = np.cumsum(ev_b.sum(axis=other))[:-1]
+        area = np.cumsum(mask.sum(axis=other))[:-1] * cell_area
+        purity = np.maximum(cum_a + tot_b - cum_b, cum_b + tot_a - cum_a) / total
+        valid = (area >= config.min_room_area) & (mask.sum() * cell_area - area >= config.min_room_area)
+        if valid.any():
+            t = int(np.argmax(np.where(valid, purity, -1.0)))
+            if best is None or purity[t] > best[0]:
+                best = (float(purity[t]), axis, t + 1)
+    if best is None or best[0] < config.split_purity or best[0] - unsplit < config.split_gain:
+        return None
+    return best[1], best[2]
+
+
+def _split_component(mask: np.ndarray, evidence: np.ndarray, cell_area: float, config: RoomConfig,
+                     depth: int) -> list[np.ndarray]:
+    """Recursively split `mask` (h, w) using `evidence` (h, w, L); returns disjoint masks."""
+    if depth >= config.split_max_depth or mask.sum() * cell_area < config.split_min_area:
+        return [mask]
+    ev = evidence * mask[..., None]
+    totals = ev.reshape(-1, ev.shape[-1]).sum(axis=0)
+    if np.count_nonzero(totals) < 2:
+        return [mask]
+    b, a = np.argsort(totals)[-2:]
+    line = _split_line(mask, ev[..., a], ev[..., b], cell_area, config)
+    if line is None:
+        return [mask]
+    axis, t = line
+    side = np.zeros(mask.shape, bool)
+    if axis == 0:
+        side[:t] = True
+    else:
+        side[:, :t] = True
+    return [part for half in (mask & side, mask & ~side)
+            for part in _split_component(half, evidence, cell_area, config, depth + 1)]
+
+
+def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabels, cell_size: float,
+                     config: RoomConfig = RoomConfig(), object_evidence: Optional[np.ndarray] = None,
+                     furniture: Optional[np.ndarray] = None) -> RoomSegmentation:
+    """Rooms of a grid from (H, W) bool masks `walls` (walls, doors, windows), `known` (observed or
+    occupied) and optional `furniture` (large fixed furniture: part of the boundary mask, but its
+    cells are then given to the room around them), per-cell labels and optional (H, W, L) object
+    evidence for the split. Cells are `cell_size` m wide."""
+    import cv2
+
+    labels, names = cell_labels.labels, cell_labels.names
+    n_labels = len(names)
+    cell_area = cell_size * cell_size
+    furniture = np.zeros_like(walls) if furniture is None else furniture
+    structural = walls | furniture
+    boundaries = boundary_raster(structural, cell_size, config)
+    near_known = cv2.morphologyEx(known.astype(np.uint8), cv2.MORPH_CLOSE, _disk(0.5 / cell_size)).astype(bool)
+    free = near_known & ~boundaries.raster & ~structural
+    n, comp, stats, _ = cv2.connectedComponentsWithStats(free.astype(np.uint8), connectivity=4)
+    comp = comp.astype(np.int32)
+    area = stats[:, cv2.CC_STAT_AREA]
+    observed = np.bincount(comp[labels >= 0], minlength=n)
+    keep = (area * cell_area >= config.min_room_area) & (observed >= config.min_observed * area)
+    keep[0] = False
+    lut = np.full(n, -1, np.int32)
+    lut[keep] = np.arange(int(keep.sum()), dtype=np.int32)
+    room_map = lut[comp]
+    n_rooms, splits = int(keep.sum()), 0
+    if config.split and n_rooms and n_labels >= 2:
+        big = area[keep] * cell_area >= config.split_min_area
+        for room, (c0, r0, width, height) in enumerate(stats[keep, :4].tolist()):
+            if not big[room]:
+                continue
+            r1, c1 = r0 + height, c0 + width
+            crop = room_map[r0:r1, c0:c1]
+            evidence = (labels[r0:r1, c0:c1, None] == np.arange(n_labels)).astype(np.float32)
+            if object_evidence is not None:
+                evidence += config.object_vote_weight * object_evidence[r0:r1, c0:c1]
+            parts = _split_component(crop == room, evidence, cell_area, config, 0)
+            for part in parts[1:]:
+                crop[part] = n_rooms
+                n_rooms += 1
+                splits += 1
+    margin = config.dilate / cell_size + config.close / cell_size + config.line_thickness + 2
+    room_map = _fill_margin(room_map, ~structural, margin)
+    room_map = _fill_margin(room_map, furniture, np.inf)
+    room_labels = _majority_labels(room_map, labels, n_rooms, n_labels)
+    return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
+                            components=int(keep.sum()), splits=splits, boundaries=boundaries,
+                            notes=list(boundaries.notes))
+
+
+def _fill_margin(room_map: np.ndarray, allowed: np.ndarray, margin_cells: float) -> np.ndarray:
+    """Give `allowed` cells without a room, within `margin_cells` of a room, the nearest room's id."""
+    import cv2
+
+    unassigned = (room_map < 0).astype(np.uint8)
+    if not unassigned.any() or unassigned.all():
+        return room_map
+    distance, nearest = cv2.distanceTransformWithLabels(unassigned, cv2.DIST_L2, 5,
+                                                        labelType=cv2.DIST_LABEL_PIXEL)
+    inside = room_map >= 0
+    lut = np.full(int(nearest.max()) + 1, -1, np.int32)
+    lut[nearest[inside]] = room_map[inside]
+    fill = (room_map < 0) & allowed & (distance <= margin_cells)
+    out = room_map.copy()
+    out[fill] = lut[nearest[fill]]
+    return out
+
+
+def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int) -> np.ndarray:
+    """(R,) majority per-cell label index of each room, -1 for a room with no labelled cell."""
+    both = (room_map >= 0) & (labels >= 0)
+    counts = np.bincount(room_map[both] * n_labels + labels[both],
+                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels)
+    return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)

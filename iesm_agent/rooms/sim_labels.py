@@ -1,0 +1,97 @@
+"""Simulated per-cell room labels that behave like the paper's per-pixel CLIP baseline.
+
+For every frame, each depth pixel (subsampled) is back-projected to the world and voted into the
+grid cell it lands in. Its label is the type of the room the point lies in with probability
+`p_content`, else the type of the room the camera stands in (viewpoint dependence: looking through
+a door or across an open-plan space labels the next room after the camera's); per frame, with
+probability `p_confuse`, the camera's room type is replaced by a similar type (lexicon "related"
+pairs, else any other type in the scene); `p_noise` of the pixels get a random type. Cells take the
+majority over all votes. Everything is seeded. Reads the ground truth, so only for the simulator.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import IesmError
+from ..frames import Frame, FrameSet, GroundTruth, Intrinsics
+from ..store.model import GridSpec
+from .labels import CellLabels
+
+
+def world_points(frame: Frame, intrinsics: Intrinsics, stride: int) -> np.ndarray:
+    """(M, 3) world points (m) of every `stride`-th pixel with a depth reading."""
+    v, u = np.mgrid[0:intrinsics.height:stride, 0:intrinsics.width:stride]
+    z = frame.depth[v, u]
+    ok = z > 0
+    u, v, z = u[ok], v[ok], z[ok]
+    cam = np.stack([(u - intrinsics.cx) / intrinsics.fx * z, (v - intrinsics.cy) / intrinsics.fy * z, z], axis=1)
+    return cam @ frame.pose[:3, :3].T + frame.pose[:3, 3]
+
+
+def _cells(points_xy: np.ndarray, grid: GridSpec) -> np.ndarray:
+    """(M,) flat cell index of each (x, y) point, -1 outside the grid."""
+    col = np.floor((points_xy[:, 0] - grid.origin[0]) / grid.cell_size).astype(np.int64)
+    row = np.floor((points_xy[:, 1] - grid.origin[1]) / grid.cell_size).astype(np.int64)
+    ok = (row >= 0) & (row < grid.height) & (col >= 0) & (col < grid.width)
+    return np.where(ok, row * grid.width + col, -1)
+
+
+def _similar_types(names: list[str]) -> list[np.ndarray]:
+    """Per room type, the indices of the types it is confused with (lexicon relations, else all others)."""
+    from ..lexicon import read_data
+
+    related: dict[str, set[str]] = {}
+    for a, b, _ in read_data("rooms.json").get("related", []):
+        related.setdefault(a, set()).add(b)
+        related.setdefault(b, set()).add(a)
+    out = []
+    for i, name in enumerate(names):
+        close = [names.index(other) for other in related.get(name, ()) if other in names]
+        out.append(np.array(close or [j for j in range(len(names)) if j != i] or [i]))
+    return out
+
+
+class ViewpointLabels:
+    """`CellLabelSource` over a simulator frame directory (needs DIR/gt)."""
+
+    def __init__(self, frames_dir: str | Path, *, seed: int = 0, stride: int = 4, p_content: float = 0.55,
+                 p_confuse: float = 0.25, p_noise: float = 0.15, max_height: float = 2.0):
+        self.frames = FrameSet.open(frames_dir)
+        self.gt = GroundTruth.load(frames_dir)
+        if not self.gt.rooms_list:
+            raise IesmError("ground truth lists no rooms: no room types to label cells with", Path(frames_dir) / "gt")
+        self.seed, self.stride, self.max_height = seed, stride, max_height
+        self.p_content, self.p_confuse, self.p_noise = p_content, p_confuse, p_noise
+        self.names = sorted({str(room["label"]) for room in self.gt.rooms_list})
+
+    def cell_labels(self, grid: GridSpec) -> CellLabels:
+        rng = np.random.default_rng(self.seed)
+        index = {name: i for i, name in enumerate(self.names)}
+        room_type = np.full(int(self.gt.rooms.max(initial=-1)) + 2, -1, np.int64)  # room id -> type, [-1] = none
+        for room in self.gt.rooms_list:
+            room_type[int(room["id"])] = index[str(room["label"])]
+        gt_rooms = self.gt.rooms.ravel()
+        similar = _similar_types(self.names)
+        n_labels = len(self.names)
+        codes = []
+        for frame in self.frames:
+            points = world_points(frame, self.frames.intrinsics, self.stride)
+            points = points[points[:, 2] < self.max_height]
+            camera_cell = _cells(frame.pose[None, :2, 3], self.gt.grid)[0]
+            camera_type = room_type[gt_rooms[camera_cell]] if camera_cell >= 0 else -1
+            if camera_type < 0 or len(points) == 0:
+                continue
+            if rng.random() < self.p_confuse:
+                camera_type = int(rng.choice(similar[camera_type]))
+            gt_cell = _cells(points[:, :2], self.gt.grid)
+            content = np.where(gt_cell >= 0, room_type[gt_rooms[np.maximum(gt_cell, 0)]], -1)
+            label = np.where((content >= 0) & (rng.random(len(points)) < self.p_content), content, camera_type)
+            noisy = rng.random(len(points)) < self.p_noise
+            label[noisy] = rng.integers(0, n_labels, int(noisy.sum()))
+            cell = _cells(points[:, :2], grid)
+            codes.append(cell[cell >= 0] * n_labels + label[cell >= 0])
+        all_codes = np.concatenate(codes) if codes else np.zeros(0, np.int64)
+        return CellLabels.from_votes(all_codes, (grid.height, grid.width), self.names)

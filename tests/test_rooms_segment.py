@@ -1,0 +1,104 @@
+"""Room segmentation on hand-made walled layouts: LSD boundaries, components, majority labels,
+the contextual open-plan split, polygons and per-instance rooms."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from iesm_agent.errors import IesmError
+from iesm_agent.rooms import CellLabels, RoomConfig, segment_rooms, segment_scene
+from iesm_agent.rooms.boundaries import boundary_raster, merge_collinear
+from iesm_agent.rooms.metrics import baseline_scores, score_room_map
+from iesm_agent.rooms.synthetic import grid_layout, noisy_labels
+
+
+def scores(layout, seg):
+    return score_room_map(seg.room_map, seg.labels, layout.rooms, dict(enumerate(layout.room_labels)))
+
+
+def test_walled_rooms_are_found_and_labelled_despite_noisy_cells():
+    layout = grid_layout(3, 2)
+    labels = noisy_labels(layout, accuracy=0.6, seed=1)
+    seg = segment_scene(layout.scene, labels)
+    assert seg.boundaries.detector == "lsd" and seg.components == 6 and seg.splits == 0
+    got = scores(layout, seg)
+    base = baseline_scores(labels, layout.rooms, dict(enumerate(layout.room_labels)))
+    assert got["acc"] > 0.97 and got["miou"] > 0.95 and got["rooms_pred"] == 6
+    assert base["acc"] < 0.7 and got["miou"] > base["miou"] + 0.3
+    # each GT room is covered by one predicted room carrying its label
+    for gt_id, label in enumerate(layout.room_labels):
+        ids, counts = np.unique(seg.room_map[layout.rooms == gt_id], return_counts=True)
+        assert seg.labels[ids[np.argmax(counts)]] == label
+
+
+def test_door_gaps_are_closed_by_merging_collinear_segments():
+    layout = grid_layout(2, 1, door=0.9)
+    assert segment_scene(layout.scene, noisy_labels(layout, 1.0)).components == 2
+    no_merge = RoomConfig(merge_gap=0.0, split=False)
+    assert segment_scene(layout.scene, noisy_labels(layout, 1.0), no_merge).components == 1
+
+
+def test_merge_collinear_joins_a_line_broken_by_a_gap_but_not_parallel_lines():
+    segs = np.array([[0, 0, 10, 0], [14, 0.5, 30, 0.5], [0, 20, 30, 20]], np.float32)
+    merged = merge_collinear(segs, angle_deg=5, offset=2, gap=6)
+    assert len(merged) == 2
+    long = merged[np.argmax(np.abs(merged[:, 2] - merged[:, 0]))]
+    assert min(long[0], long[2]) == pytest.approx(0, abs=0.6) and max(long[0], long[2]) == pytest.approx(30, abs=0.6)
+    assert len(merge_collinear(segs, angle_deg=5, offset=2, gap=2)) == 3
+
+
+def test_hough_fallback_when_lsd_is_missing(monkeypatch):
+    import cv2
+
+    mask = np.zeros((100, 100), bool)
+    mask[48:52, 5:95] = True
+    monkeypatch.delattr(cv2, "createLineSegmentDetector")
+    result = boundary_raster(mask, 0.05)
+    assert result.detector == "hough" and "HoughLinesP" in result.notes[0]
+    assert result.raster[50, 10:90].all() and not result.raster[10, 50]
+
+
+@pytest.mark.parametrize("open_walls", [(("v", 0, 0),), (("v", 0, 0), ("h", 1, 0))])
+def test_contextual_split_separates_open_plan_rooms(open_walls):
+    layout = grid_layout(3, 2, open_walls=open_walls)
+    labels = noisy_labels(layout, accuracy=0.6, seed=3)
+    plain = segment_scene(layout.scene, labels, RoomConfig(split=False))
+    ours = segment_scene(layout.scene, labels)
+    assert plain.components == 6 - len(open_walls) and ours.splits == len(open_walls)
+    assert scores(layout, ours)["miou"] > scores(layout, plain)["miou"] + 0.15
+    assert scores(layout, ours)["miou"] > 0.95
+
+
+def test_no_split_when_the_labels_do_not_cluster():
+    layout = grid_layout(2, 1, open_walls=(("v", 0, 0),), labels=("living room", "living room"))
+    labels = noisy_labels(layout, accuracy=0.9, seed=0)
+    seg = segment_scene(layout.scene, labels)
+    assert seg.splits == 0 and seg.components == 1 and seg.labels == ["living room"]
+
+
+def test_segment_rooms_writes_rooms_polygons_instance_rooms_and_obstacles():
+    layout = grid_layout(2, 2)
+    scene = segment_rooms(layout.scene, noisy_labels(layout, 0.8))
+    assert len(scene.rooms) == 4 and scene.room_map.dtype == np.int32
+    for room in scene.rooms:
+        xs, ys = np.array(room.polygon).T
+        assert 3.0 < xs.max() - xs.min() <= 4.1 and 3.0 < ys.max() - ys.min() <= 4.1
+    bed = next(i for i in scene.instances if i.label == "bed")
+    assert bed.room_label == "bedroom" and scene.rooms[bed.room_id].label == "bedroom"
+    assert all(i.room_id is None for i in scene.instances if i.label == "wall")
+    assert scene.obstacles[scene.room_map < 0].mean() > 0.9       # the walls block
+    assert "lsd" in scene.meta["room_segmentation"]
+
+
+def test_bad_inputs_are_clear_errors():
+    layout = grid_layout(1, 1)
+    with pytest.raises(IesmError, match="per-cell labels are"):
+        segment_scene(layout.scene, CellLabels(np.zeros((3, 3), np.int32), ["kitchen"]))
+
+
+def test_no_observed_cells_means_no_rooms():
+    layout = grid_layout(2, 1)
+    empty = CellLabels(np.full(layout.rooms.shape, -1, np.int32), ["kitchen"])
+    seg = segment_scene(layout.scene.model_copy(update={"instances": layout.scene.instances}), empty)
+    assert seg.labels == [] and (seg.room_map == -1).all()
