@@ -147,3 +147,32 @@ def test_bad_frames_give_one_line_naming_the_file_and_no_map(tiny, tmp_path, cap
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("iesm: error:") and culprit in err[0]
     assert not out.exists() and not list(tmp_path.glob(".bad.iesm*"))
+
+
+def test_queries_from_ground_truth_run_on_the_built_map(tiny, tmp_path, capsys):
+    built = tmp_path / "tiny.iesm"
+    assert run(["build-map", str(tiny), "-o", str(built)]) == 0
+    suite = tmp_path / "suite.jsonl"
+    assert run(["gen-queries", str(built), "--gt", str(tiny), "--types", "o", "-n", "3", "-o", str(suite)]) == 0
+    assert "0 dropped" in capsys.readouterr().out
+    lines = [json.loads(line) for line in suite.read_text().splitlines()]
+    scene = load_map(built)
+    by_id = {i.id: i.label for i in scene.instances}
+    assert len(lines) == 3
+    for q in lines:
+        assert q["map"] == "tiny.iesm" and q["target"] in by_id
+        assert by_id[q["target"]] in q["query"]                     # gt label == built label here
+    assert run(["eval", str(suite), "-o", str(tmp_path / "run")]) == 0
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert summary["methods"]["mtefr"]["overall"]["osr"] == 1.0
+
+
+def test_translate_drops_unmatched_targets():
+    from iesm_agent.evals.suite import SuiteQuery
+    from iesm_agent.mapping.queries import translate
+
+    qs = [SuiteQuery(id="a", map="gt.json", query="find the cup", type="o", target=2, accept=[2, 5]),
+          SuiteQuery(id="b", map="gt.json", query="find the bed", type="o", target=9, accept=[9])]
+    kept, dropped = translate(qs, {2: 11, 3: 12}, "built.iesm")
+    assert dropped == 1 and len(kept) == 1
+    assert (kept[0].target, kept[0].accept, kept[0].map) == (11, [11], "built.iesm")

@@ -98,6 +98,8 @@ def gen_queries_command(
                                            help="Let this model write the queries (prompts/gen_queries.j2); "
                                                 "templates otherwise."),
     base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+    gt: Optional[Path] = typer.Option(None, "--gt", help="Frame directory with gt/: write the queries from its "
+                                                         "ground truth, translated to the ids of MAP (a built map)."),
 ) -> None:
     """Generate a query suite of the paper's five types from map instances."""
     from ..evals.generate import generate_suite, parse_types
@@ -111,6 +113,17 @@ def gen_queries_command(
             raise IesmError("the offline model does not write queries; leave out --provider to use templates",
                             "--provider")
         model = get_model(provider, base_url=base_url, cache=True)
+    if gt is not None:
+        from ..errors import IesmError
+        from ..mapping.queries import generate_gt_suite
+
+        if len(maps) != 1:
+            raise IesmError("--gt takes exactly one MAP (the map built from that frame directory)", "--gt")
+        result, dropped = asyncio.run(generate_gt_suite(maps[0], gt, out, parse_types(types), per_type=per_type,
+                                                        seed=seed, model=model))
+        print(f"{len(result.queries)} queries from the ground truth in {gt}; {dropped} dropped (target not "
+              f"matched in {maps[0]})")
+        return
     result = asyncio.run(generate_suite(maps, out, parse_types(types), per_type=per_type, seed=seed, model=model))
     for line in result.report_lines():
         print(line)

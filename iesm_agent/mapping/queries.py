@@ -1,0 +1,60 @@
+"""Query suites for a built map written from ground truth (`iesm gen-queries MAP --gt DIR`).
+
+Queries are generated from gt/objects.json (imported in memory as an object-list map, so the
+built map's own labels never leak into the queries), then each query's target and accepted ids
+are translated to built-map ids with `match_instances` (top-down IoU > 0.5). A query whose
+target has no match is dropped; accepted ids without a match are left out.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+from typing import Sequence
+
+from ..evals.generate import GenerationResult, generate_suite
+from ..evals.suite import SuiteQuery, write_suite
+from ..frames import GroundTruth
+from ..store import open_map
+from ..store.importers.objects import ObjectSpec
+from ..store.refs import resolve_map_path
+from .matching import match_instances
+
+
+def translate(queries: Sequence[SuiteQuery], matches: dict[int, int], map_ref: str) -> tuple[list[SuiteQuery], int]:
+    """`queries` on ground-truth ids -> the same queries on built-map ids (`map_ref`); returns
+    them and the number dropped because the target has no matched instance."""
+    kept, dropped = [], 0
+    for q in queries:
+        if q.target not in matches:
+            dropped += 1
+            continue
+        accept = sorted({matches[a] for a in q.accept if a in matches})
+        kept.append(SuiteQuery(id=q.id, map=map_ref, query=q.query, type=q.type, target=matches[q.target],
+                               accept=accept))
+    return kept, dropped
+
+
+async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | Path, types: Sequence[str], *,
+                            per_type: int = 10, seed: int = 0, model=None) -> tuple[GenerationResult, int]:
+    """Write a suite for `built_map` whose queries come from the ground truth in `frames_dir`;
+    returns the generation result and the number of queries dropped (no matched target)."""
+    out = Path(out)
+    map_path = resolve_map_path(built_map)
+    scene = open_map(map_path)
+    gt = GroundTruth.load(frames_dir)
+    known = set(ObjectSpec.model_fields)
+    objects = [{k: v for k, v in o.items() if k in known} for o in gt.objects]
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / f"{gt.scene_id}_gt.json"
+        src.write_text(json.dumps({"scene_id": gt.scene_id, "rooms": gt.rooms_list or None, "objects": objects}))
+        result = await generate_suite([str(src)], Path(tmp) / "suite.jsonl", types, per_type=per_type, seed=seed,
+                                      model=model)
+    ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
+    queries, dropped = translate(result.queries, match_instances(scene, gt), ref)
+    write_suite(queries, out)
+    result.queries = queries
+    return result, dropped
+
