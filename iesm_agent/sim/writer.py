@@ -1,0 +1,73 @@
+"""`render_frames`: render a world's trajectory, segment every frame and write the frame
+directory (see frames.py) with ground truth in gt/."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Callable, Optional
+
+import numpy as np
+
+from ..frames import Frame, GroundTruth, SceneMeta, write_frame, write_frame_set
+from .catalog import CEILING_RGB, FLOOR_RGB, FURNITURE, SMALL
+from .render import BoxRenderer
+from .segmenter import FaultConfig, SyntheticSegmenter
+from .world import WALL_HEIGHT, World
+
+STRUCTURAL = ("wall", "door", "window")
+
+
+def categories(config: FaultConfig) -> list[str]:
+    """The open vocabulary written to scene.json: every label the simulator can place, plus
+    structural labels and confusable labels."""
+    labels = {s.label for specs in FURNITURE.values() for s in specs} | set(SMALL) | set(STRUCTURAL)
+    labels |= {c for cs in config.confusables.values() for c in cs}
+    return sorted(labels)
+
+
+def ground_truth(world: World) -> GroundTruth:
+    """Instances as an object list (iesm import format + "structural", "on"), rooms with
+    polygons, and the fine rasters."""
+    bounds = world.instance_bounds()
+    objects = []
+    for inst in world.instances:
+        lo, hi = bounds[inst.id]
+        objects.append({"id": inst.id, "label": inst.label, "center": np.round((lo + hi) / 2, 4).tolist(),
+                        "size": np.round(hi - lo, 4).tolist(), "color_rgb": list(inst.rgb), "room": inst.room,
+                        "tags": {"color": inst.color, "material": inst.material},
+                        "structural": inst.structural, "on": inst.on})
+    rooms = [{"id": rid, "label": label, "polygon": [list(p) for p in world.plan.polygon(rid)]}
+             for rid, label in sorted(world.plan.labels.items())]
+    return GroundTruth(world.scene_id, objects, rooms, world.grid, world.room_raster, world.occupancy(),
+                       world.instance_grid())
+
+
+def render_frames(world: World, out_dir: str | Path, faults: Optional[FaultConfig] = None,
+                  space: Optional[str] = None, progress: Optional[Callable[[int], None]] = None) -> dict:
+    """Write world's frames (rgb, depth, pose, seg, inst) and gt/ into `out_dir`; `progress(i)`
+    is called after frame i. Returns a summary: scene_id, rooms, instances, structural, stacked,
+    frames, seen (instances covering at least `min_area_px` pixels in some frame), embedding_space."""
+    faults = faults or FaultConfig(seed=world.seed)
+    out_dir = Path(out_dir)
+    renderer = BoxRenderer(world.boxes, world.box_rgb(), world.box_instance, world.intrinsics, WALL_HEIGHT,
+                           floor_rgb=FLOOR_RGB, ceiling_rgb=CEILING_RGB)
+    segmenter = SyntheticSegmenter({i.id: i.label for i in world.instances}, faults, space)
+    meta = SceneMeta(scene_id=world.scene_id, n_frames=len(world.poses), embedding_space=segmenter.space,
+                     categories=categories(faults), cell_size=world.grid.cell_size)
+    write_frame_set(out_dir, meta, world.intrinsics)
+    best_view = np.zeros(len(world.instances) + 1, np.int64)
+    for index, pose in enumerate(world.poses):
+        rendered = renderer.render(pose, np.random.default_rng([world.seed, 7, index]))
+        frame = Frame(index, rendered.rgb, rendered.depth, pose, instance_ids=rendered.instance_ids)
+        frame.segmentation = segmenter.segment(frame)
+        write_frame(out_dir, frame)
+        counts = np.bincount(rendered.instance_ids.ravel(), minlength=len(best_view))
+        np.maximum(best_view, counts, out=best_view)
+        if progress:
+            progress(index)
+    ground_truth(world).save(out_dir)
+    return {"scene_id": world.scene_id, "rooms": len(world.plan.labels), "instances": len(world.instances),
+            "structural": sum(i.structural for i in world.instances),
+            "stacked": sum(i.on is not None for i in world.instances), "frames": len(world.poses),
+            "seen": int(np.sum(best_view[1:] >= faults.min_area_px)), "embedding_space": segmenter.space,
+            "open_plan": [[world.plan.labels[a], world.plan.labels[b]] for a, b in world.plan.open_pairs]}
