@@ -120,7 +120,8 @@ def is_above(a: Boxes, b: Boxes) -> np.ndarray:
 
 def segment_distance(a: Boxes, r1: Boxes, r2: Boxes) -> np.ndarray:
     """(Na,) the smallest distance (m) from a's centre to a segment joining an r1 and an r2 centre,
-    plus how far a's projection falls outside the segment; pairs of one object with itself skipped."""
+    plus how far a's projection falls outside the segment; pairs of one object with itself, and
+    segments ending at a itself, are skipped."""
     p = a.center[:, None, None, :2]
     s, e = r1.center[None, :, None, :2], r2.center[None, None, :, :2]
     d = e - s
@@ -130,8 +131,9 @@ def segment_distance(a: Boxes, r1: Boxes, r2: Boxes) -> np.ndarray:
     off = np.hypot(*(p - closest).transpose(3, 0, 1, 2))
     outside = np.maximum(0, np.maximum(-t, t - 1)) * np.sqrt(length2)
     cost = off + outside
-    same = r1.ids[:, None] == r2.ids[None, :]
-    cost = np.where(same[None], np.inf, cost)
+    same = (r1.ids[:, None] == r2.ids[None, :])[None]
+    own = (a.ids[:, None, None] == r1.ids[None, :, None]) | (a.ids[:, None, None] == r2.ids[None, None, :])
+    cost = np.where(same | own, np.inf, cost)
     return cost.reshape(len(a), -1).min(axis=1, initial=np.inf)
 
 

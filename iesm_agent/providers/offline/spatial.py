@@ -38,7 +38,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
     ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
     ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing",
-    ("looking", "at"): "facing", ("from",): "from",
+    ("looking", "at"): "facing", ("from",): "from", ("with",): "with",
 }
 _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
              "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
@@ -48,8 +48,9 @@ _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger"
 _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
              "fifth": 5, "5th": 5, "last": -1}
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "closest", "farthest", "between", "facing",
-                   "left", "right", "front", "behind", "from"}
+                   "left", "right", "front", "behind", "from", "with"}
 _WALL_WORDS = {"wall", "walls"}
+_INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
 
 
 @dataclass
@@ -63,6 +64,7 @@ class Relation:
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
     value: str = ""
     order: int = 0
+    landmark_where: str = ""  # "corner" / "middle" / "wall": which of the landmark's instances
 
 
 @dataclass
@@ -108,11 +110,14 @@ def parse_query(text: str) -> SpatialQuery:
                 return j
         return None
 
+    last_landmark_end = [-1]
+
     def landmark(rel: Relation, pos: int) -> bool:
         j = next_cat(pos)
         if j is None:
             return False
         used.add(j)
+        last_landmark_end[0] = cat_at[j].end
         rel.landmarks.append(tuple(c for c in cat_at[j].values("cat")))
         rel.landmark_attrs.append(attrs_before(j))
         return True
@@ -150,6 +155,7 @@ def parse_query(text: str) -> SpatialQuery:
         if kind == "from" and pending_ordinal is not None:
             if nxt in ("left", "right"):
                 pending_ordinal.value = nxt
+                i += 1
             elif landmark(pending_ordinal, i):
                 pending_ordinal.value = "landmark"
             continue
@@ -160,6 +166,16 @@ def parse_query(text: str) -> SpatialQuery:
             if j is not None:
                 used.add(j)
                 out.facing = tuple(cat_at[j].values("cat"))
+            continue
+        if kind in ("corner", "middle") and nxt == "of":
+            rel = Relation(kind)
+            landmark(rel, i)  # "the middle of the bed": relative to that object
+            out.relations.append(rel)
+            continue
+        if kind == "right" and nxt in _INTENSIFIED:
+            continue  # "right below the sink": an intensifier, not a side
+        if kind in ("corner", "middle", "wall") and last_landmark_end[0] == i - len(words) - 1 and toks[i - len(words) - 1] in ("in", "at", "by"):
+            out.relations[-1].landmark_where = kind  # "near the plant in the corner": the plant's place
             continue
         if kind in ("left", "right", "front", "behind"):
             rel = Relation(kind)
@@ -285,9 +301,12 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         rows = np.flatnonzero(_of_kind(scene, cats, attrs))
         if not len(rows):
             return None
+        if rel.landmark_where:
+            where = _relation_scores(Relation(rel.landmark_where), scene, rows, facing)
+            rows = rows[where >= where.max() - 1e-9]
         marks.append(boxes.take(rows))
     kind = rel.kind
-    if kind in ("on", "under", "above", "below"):
+    if kind in ("on", "under", "above", "below", "with"):
         lm = marks[0]
         if kind == "on":
             hit = geo.rests_on(tb, lm) | np.array([[int(i) in scene.on[t] for i in lm.ids] for t in targets])
@@ -295,10 +314,14 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             hit = geo.is_under(tb, lm) | np.array([[int(i) in scene.under[t] for i in lm.ids] for t in targets])
         elif kind == "above":
             hit = geo.is_above(tb, lm)
-        else:
+        elif kind == "below":
             hit = geo.is_above(lm, tb).T
-        near = np.exp(-geo.xy_gap(tb, lm).min(axis=1))
-        return np.where(hit.any(axis=1), 1.0, 0.15 * near)
+        else:  # "the nightstand with the clock (on it)": the landmark rests on the target
+            hit = geo.rests_on(lm, tb).T
+        close = np.exp(-geo.center_distance(tb, lm))
+        near = np.exp(-geo.xy_gap(tb, lm) / geo.NEAR_GAP)
+        # satisfied: 0.7 + up to 0.3 for the closest landmark; otherwise a little for being near
+        return np.where(hit, 0.7 + 0.3 * close, (0.5 if kind == "with" else 0.15) * near).max(axis=1)
     if kind in ("near", "closest", "farthest"):
         lm = marks[0]
         gap = geo.xy_gap(tb, lm) + 0.25 * geo.center_distance(tb, lm)
@@ -310,6 +333,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         if len(marks) < 2:
             marks.append(marks[0])
         return _rank_score(-geo.segment_distance(tb, marks[0], marks[1]))
+    if kind == "middle" and marks:
+        return _rank_score(-geo.center_distance(tb, marks[0]).min(axis=1))
     if kind in ("corner", "middle", "wall"):
         lo, hi = _extent(scene, targets)
         c = tb.center[:, :2]
