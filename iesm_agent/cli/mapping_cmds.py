@@ -72,7 +72,8 @@ def format_result(r: dict) -> str:
              f"top-down Acc {t['acc']:.3f}  mAcc {t['macc']:.3f}  mIoU {t['miou']:.3f}  F-mIoU {t['fmiou']:.3f}",
              f"small objects ({', '.join(s['categories']) or '-'}): AUC^top pred {s['auc_top']['pred']:.3f}  "
              f"gt {s['auc_top']['gt']:.3f}  match {s['auc_top']['match']:.3f}; Instance Diff {s['instance_diff']}",
-             f"stacked objects ({r['stacked']['n_gt']}): top-1 recall {r['stacked']['top1_recall']:.3f}"]
+             f"stacked objects ({r['stacked']['n_gt']}): top-1 of matched {r['stacked']['top1_match']:.3f}, "
+             f"of all {r['stacked']['top1_gt']:.3f}"]
     lines += [f"{key}: {json.dumps(value)}" for key, value in r.items()
               if key not in ("auc_top", "small", "topdown", "stacked", "n_pred", "n_gt", "n_matched", "instance_diff")]
     return "\n".join(lines)

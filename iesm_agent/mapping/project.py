@@ -68,10 +68,17 @@ def mask_points(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: 
     usable = (depth > 0) & (depth <= max_depth) & np.isfinite(depth)
     pixels = np.flatnonzero(usable.ravel() & flat_masks.any(axis=0))
     k, j = np.nonzero(flat_masks[:, pixels])
+    keys, z = pixel_cells(depth, pixels, fx, fy, cx, cy, pose, cell_size)
+    return k.astype(np.int64), keys[j], z[j]
+
+
+def pixel_cells(depth: np.ndarray, pixels: np.ndarray, fx: float, fy: float, cx: float, cy: float,
+                pose: np.ndarray, cell_size: float) -> tuple[np.ndarray, np.ndarray]:
+    """(global cell key, world z m) of flat pixel indices `pixels` of `depth` (H, W) metres."""
     pts = world_points(depth, pixels, fx, fy, cx, cy, pose)
     rows = np.floor(pts[:, 1] / cell_size).astype(np.int64)
     cols = np.floor(pts[:, 0] / cell_size).astype(np.int64)
-    return k.astype(np.int64), keys_of(rows, cols)[j], pts[j, 2]
+    return keys_of(rows, cols), pts[:, 2]
 
 
 def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: float, cy: float,
