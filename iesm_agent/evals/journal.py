@@ -37,6 +37,8 @@ class ResultRecord(BaseModel):
     cache_hits: int = 0
     failures: list[str] = []
     candidate_recall: Optional[bool] = None
+    nav_success: Optional[bool] = None  # reached within 1 m of the ground-truth instance (N-SR)
+    path_length_m: Optional[float] = None
 
     @property
     def key(self) -> tuple[str, str]:

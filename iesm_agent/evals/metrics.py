@@ -19,6 +19,13 @@ def osr(records: Sequence[ResultRecord]) -> float:
     return sum(r.correct for r in records) / len(records) if records else 0.0
 
 
+def nsr(records: Sequence[ResultRecord]) -> Optional[float]:
+    """Navigation success rate (paper Sec. 4.3) over the records whose retrieval was correct and
+    whose trial could be judged; None when there are none."""
+    judged = [r.nav_success for r in records if r.correct and r.nav_success is not None]
+    return sum(judged) / len(judged) if judged else None
+
+
 def mrr(ranks: Iterable[Optional[int]]) -> float:
     """Mean reciprocal rank; a missing rank (no accepted id ranked) counts 0."""
     ranks = list(ranks)
@@ -46,6 +53,7 @@ def _overall(records: Sequence[ResultRecord]) -> dict:
         "cache_hits": sum(r.cache_hits for r in records),
         "queries_with_failures": sum(1 for r in records if r.failures),
         "candidate_recall": statistics.fmean(map(float, recalls)) if recalls else None,
+        "nsr": nsr(records),
     }
 
 
@@ -67,7 +75,7 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
         methods[variant] = {
             "overall": overall,
             "by_type": {t: {"n": len(by_type[t]), "osr": osr(by_type[t]),
-                            "mrr": mrr(r.rank for r in by_type[t])} for t in order},
+                            "mrr": mrr(r.rank for r in by_type[t]), "nsr": nsr(by_type[t])} for t in order},
         }
     return {"methods": methods}
 

@@ -59,6 +59,13 @@ def render_markdown(summary: dict, plot: str | None) -> str:
         lines.append(f"| {name} | {o['n']} | {o['mrr']:.3f} | {_pct(o['top3'])} | {o['latency_ms_p50']:.1f} "
                      f"| {o['latency_ms_mean']:.1f} | {o['tokens']} | {o['cache_hits']} "
                      f"| {o['queries_with_failures']} | {_pct(o['candidate_recall'])} |")
+    if any(m["overall"].get("nsr") is not None for m in methods.values()):
+        lines += ["", "## Navigation success given correct retrieval (N-SR, %)", "",
+                  "| Method | " + " | ".join(TYPE_TITLES[t] for t in types) + " | overall |",
+                  "|---|" + "---:|" * (len(types) + 1)]
+        for name, m in methods.items():
+            cells = [_pct(m["by_type"].get(t, {}).get("nsr")) for t in types]
+            lines.append(f"| {name} | " + " | ".join(cells) + f" | {_pct(m['overall']['nsr'])} |")
     if summary["significance"]:
         lines += ["", "## Paired significance (exact McNemar, two-sided)", "",
                   "`A only` / `B only`: queries only that variant got right.", "",

@@ -148,6 +148,7 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     """Run (or resume) the evaluation described by `config` into `run_dir`. `model` overrides
     the provider named in the config (tests); `on_start(n_pending)` and `on_result` drive a
     progress display. The response cache (if on) lives in `$IESM_CACHE_DIR` or the user cache."""
+    from ..nav.agent import trials_for_map
     from ..retrieval import Retriever
     from ..store.mapstore import MapStore
 
@@ -167,6 +168,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
     model = model or _build_model(config)
     stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
+    navs = {path: trials_for_map(registry.get(path))
+            for path in {e.map_path for e, _ in jobs if e.query.start is not None}}
     retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
                                             experts_dirs=config.experts_dirs, cache=False)
                   for path, store in stores.items() for v in config.variants}
@@ -178,7 +181,7 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
         async def worker() -> None:
             for entry, variant in pending:
-                record = await _ask(retrievers[entry.map_path, variant.name], entry, variant)
+                record = await _ask(retrievers[entry.map_path, variant.name], entry, variant, navs.get(entry.map_path))
                 append_record(handle, record)
                 new.append(record)
                 if on_result:
@@ -196,9 +199,12 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
                       wall_s=time.perf_counter() - started)
 
 
-async def _ask(retriever, entry: SuiteEntry, variant: Variant) -> ResultRecord:
+async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> ResultRecord:
     """One retrieval as a record; rank and ranking cover the ids the method scored (the rest of
-    the candidate set follows in arbitrary candidate order and would inflate MRR)."""
+    the candidate set follows in arbitrary candidate order and would inflate MRR). With `nav`
+    (NavTrials) and a start, the simulated robot then goes to the retrieved instance (N-SR)."""
+    from ..nav.agent import record_fields
+
     q = entry.query
     res = await retriever.aask(q.query, target=q.target)
     scored = [i for i in res.ranking if i in res.scores]
@@ -207,7 +213,7 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant) -> ResultRecord:
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
         rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
         tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures,
-        candidate_recall=res.candidate_recall)
+        candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id))
 
 
 def _shown(path: str) -> str:

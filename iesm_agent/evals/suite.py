@@ -34,6 +34,7 @@ class SuiteQuery(BaseModel):
     type: Optional[QueryType] = None
     target: int
     accept: list[int] = Field(default_factory=list)
+    start: Optional[tuple[float, float]] = None  # (x, y) m: the robot's start for N-SR
 
     @model_validator(mode="after")
     def _target_accepted(self) -> "SuiteQuery":

@@ -70,7 +70,8 @@ def footprint_distance(xy: np.ndarray, cells: InstanceGrid, grid: GridSpec, inst
 class NavTrials:
     """Navigation trials on one built map against simulator ground truth: plan on the built map's
     obstacle map, walk against the true occupancy (grown by `body_radius` m), judge against the true
-    footprint of the ground-truth instance matched to the built instance (`to_gt`: built id -> gt id)."""
+    footprint of the ground-truth instance matched to the built instance (`to_gt`: built id -> gt id).
+    Maps imported from the ground-truth object list share its ids: pass the identity."""
 
     def __init__(self, scene: SceneMap, gt, to_gt: dict[int, int], config: ObstacleConfig = ObstacleConfig(),
                  body_radius: float = 0.1, success_radius: float = 1.0):
@@ -105,3 +106,26 @@ class NavTrials:
         return TrialOutcome(success=distance is not None and distance <= self.success_radius, status=plan.status,
                             final_xy=(round(float(final[0]), 4), round(float(final[1]), 4)),
                             distance_m=distance, path_length_m=plan.length_m, collided=collided)
+
+
+def trials_for_map(scene: SceneMap) -> Optional[NavTrials]:
+    """Trials for a built map whose `meta["frames_dir"]` (written by `iesm rooms --frames`) holds
+    simulator ground truth; None when it names none."""
+    from pathlib import Path
+
+    from ..frames import GroundTruth
+
+    frames_dir = scene.meta.get("frames_dir")
+    if not frames_dir or not (Path(frames_dir) / "gt").is_dir():
+        return None
+    return NavTrials.for_map(scene, GroundTruth.load(frames_dir))
+
+
+def record_fields(trials: Optional[NavTrials], start: Optional[tuple[float, float]],
+                  predicted: Optional[int]) -> dict:
+    """The eval-record fields of one trial: {"nav_success", "path_length_m"} (None when the query
+    has no start, the map no ground truth, or nothing was retrieved)."""
+    if trials is None or start is None or predicted is None:
+        return {}
+    outcome = trials.run(predicted, start)
+    return {"nav_success": outcome.success, "path_length_m": outcome.path_length_m}

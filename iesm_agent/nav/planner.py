@@ -94,9 +94,15 @@ class PlanningGrid:
         target = cells_of(self.scene, [instance_id])
         if not target.any():
             return fail("unreachable", f"instance {instance_id} occupies no cell of the map")
+        # only cells within max_goal_distance of the instance can be goals: work in that window
+        rows, cols = np.nonzero(target)
+        pad = int(np.ceil(self.max_goal_distance / self.grid.cell_size)) + 1
+        r0, c0 = max(rows.min() - pad, 0), max(cols.min() - pad, 0)
+        r1, c1 = rows.max() + pad + 1, cols.max() + pad + 1
         component = self.components()
-        reachable = component == component[row, col]
-        to_target = cv2.distanceTransform((~target).astype(np.uint8), cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
+        reachable = component[r0:r1, c0:c1] == component[row, col]
+        to_target = cv2.distanceTransform((~target[r0:r1, c0:c1]).astype(np.uint8), cv2.DIST_L2,
+                                          cv2.DIST_MASK_PRECISE)
         candidates = np.where(reachable, to_target, np.inf)
         best = float(candidates.min())
         if not np.isfinite(best) or best * self.grid.cell_size > self.max_goal_distance:
@@ -104,7 +110,7 @@ class PlanningGrid:
                 if np.isfinite(best) else ""
             return fail("unreachable", f"instance {instance_id} cannot be reached from "
                                        f"({start[0]:.2f}, {start[1]:.2f}){closest}")
-        ties = np.argwhere(candidates <= best + 1e-6)
+        ties = np.argwhere(candidates <= best + 1e-6) + (r0, c0)
         goal = ties[np.argmin(np.hypot(ties[:, 0] - row, ties[:, 1] - col))]
         path = pyastar2d.astar_path(self.weights, (row, col), (int(goal[0]), int(goal[1])), allow_diagonal=True)
         if path is None:  # cannot happen within one component; kept as a clear answer

@@ -25,15 +25,16 @@ class Boundaries:
     notes: list[str] = field(default_factory=list)
 
 
-def detect_segments(mask: np.ndarray) -> tuple[np.ndarray, str, list[str]]:
-    """Line segments of a binary (H, W) mask: LSD when this OpenCV build has it, else
+def detect_segments(mask: np.ndarray, scale: float = 0.8) -> tuple[np.ndarray, str, list[str]]:
+    """Line segments of a binary (H, W) mask: LSD (Gaussian-subsampled to `scale` internally;
+    coordinates stay in input pixels) when this OpenCV build has it, else
     `cv2.HoughLinesP` (with a note). Returns ((N, 4) float32, detector name, notes)."""
     import cv2
 
     image = np.ascontiguousarray(mask, dtype=np.uint8) * 255
     notes: list[str] = []
     try:
-        detector = cv2.createLineSegmentDetector()
+        detector = cv2.createLineSegmentDetector(cv2.LSD_REFINE_STD, scale)
         lines = detector.detect(image)[0]
         name = "lsd"
     except (AttributeError, cv2.error) as exc:
@@ -107,7 +108,7 @@ def boundary_raster(structural: np.ndarray, cell_size: float, config: RoomConfig
     """Boundaries of a (H, W) bool structural mask at `cell_size` m per cell."""
     import cv2
 
-    segments, detector, notes = detect_segments(structural)
+    segments, detector, notes = detect_segments(structural, config.lsd_scale)
     length = np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1])
     segments = segments[length * cell_size >= config.min_segment]
     segments = merge_collinear(segments, config.merge_angle_deg, config.merge_offset / cell_size,

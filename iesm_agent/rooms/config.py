@@ -27,7 +27,7 @@ class RoomConfig(BaseModel):
     """Room segmentation (paper Sec. 3.2 plus the contextual open-plan split).
 
     Structural instances (`structural_labels`, and `large_fixed_labels` with a footprint of at least
-    `large_fixed_min_area` m^2) form the boundary mask; LSD segments shorter than `min_segment` are
+    `large_fixed_min_area` m^2) form the boundary mask; LSD (run at image scale `lsd_scale`) segments shorter than `min_segment` are
     dropped; collinear segments (angle <= `merge_angle_deg`, offset <= `merge_offset`) whose ends are
     at most `merge_gap` apart are merged (this closes door gaps); the raster is drawn
     `line_thickness` cells wide, dilated by `dilate` and closed by `close`. Free components smaller
@@ -44,6 +44,7 @@ class RoomConfig(BaseModel):
     structural_labels: tuple[str, ...] = STRUCTURAL_LABELS
     large_fixed_labels: tuple[str, ...] = LARGE_FIXED_LABELS
     large_fixed_min_area: float = Field(0.5, ge=0)
+    lsd_scale: float = Field(0.5, gt=0, le=1)
     min_segment: float = Field(0.3, ge=0)
     merge_angle_deg: float = Field(5.0, ge=0, le=90)
     merge_offset: float = Field(0.15, ge=0)

@@ -47,7 +47,7 @@ def room_objects() -> dict[str, tuple[str, ...]]:
 
 
 def object_votes(scene: SceneMap, names: list[str]) -> np.ndarray:
-    """(H, W, L) float32 room-type evidence from room-typical objects: each footprint cell of an
+    """(L, H, W) float32 room-type evidence from room-typical objects: each footprint cell of an
     instance whose label is typical of k room types in `names` adds 1/k to each of them."""
     index = {name: i for i, name in enumerate(names)}
     typical: dict[str, list[int]] = {}
@@ -69,4 +69,4 @@ def object_votes(scene: SceneMap, names: list[str]) -> np.ndarray:
         rows = order[np.searchsorted(inst_ids[order], ids)]
         for label in np.flatnonzero(weight.any(axis=0)):
             votes[label] = np.bincount(flat, weights=weight[rows, label], minlength=h * w)
-    return np.moveaxis(votes.reshape(n_labels, h, w), 0, -1)
+    return votes.reshape(n_labels, h, w)

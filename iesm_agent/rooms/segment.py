@@ -58,17 +58,27 @@ def _split_line(mask: np.ndarray, ev_a: np.ndarray, ev_b: np.ndarray, cell_area:
     return best[1], best[2]
 
 
-def _split_component(mask: np.ndarray, evidence: np.ndarray, cell_area: float, config: RoomConfig,
-                     depth: int) -> list[np.ndarray]:
-    """Recursively split `mask` (h, w) using `evidence` (h, w, L); returns disjoint masks."""
+def _split_component(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndarray], n_labels: int,
+                     cell_area: float, config: RoomConfig, depth: int) -> list[np.ndarray]:
+    """Recursively split `mask` (h, w) by the per-cell `labels` (h, w) and the optional object
+    evidence `objects` (L, h, w); returns disjoint masks."""
     if depth >= config.split_max_depth or mask.sum() * cell_area < config.split_min_area:
         return [mask]
-    ev = evidence * mask[..., None]
-    totals = ev.reshape(-1, ev.shape[-1]).sum(axis=0)
+    inside = mask & (labels >= 0)
+    totals = np.bincount(labels[inside], minlength=n_labels).astype(np.float64)
+    if objects is not None:
+        totals += config.object_vote_weight * objects[:, mask].sum(axis=1)
     if np.count_nonzero(totals) < 2:
         return [mask]
-    b, a = np.argsort(totals)[-2:]
-    line = _split_line(mask, ev[..., a], ev[..., b], cell_area, config)
+    b, a = np.argsort(totals, kind="stable")[-2:]
+
+    def evidence(label: int) -> np.ndarray:
+        ev = (inside & (labels == label)).astype(np.float32)
+        if objects is not None:
+            ev += config.object_vote_weight * objects[label] * mask
+        return ev
+
+    line = _split_line(mask, evidence(a), evidence(b), cell_area, config)
     if line is None:
         return [mask]
     axis, t = line
@@ -78,7 +88,7 @@ def _split_component(mask: np.ndarray, evidence: np.ndarray, cell_area: float, c
     else:
         side[:, :t] = True
     return [part for half in (mask & side, mask & ~side)
-            for part in _split_component(half, evidence, cell_area, config, depth + 1)]
+            for part in _split_component(half, labels, objects, n_labels, cell_area, config, depth + 1)]
 
 
 def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabels, cell_size: float,
@@ -86,7 +96,7 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                      furniture: Optional[np.ndarray] = None) -> RoomSegmentation:
     """Rooms of a grid from (H, W) bool masks `walls` (walls, doors, windows), `known` (observed or
     occupied) and optional `furniture` (large fixed furniture: part of the boundary mask, but its
-    cells are then given to the room around them), per-cell labels and optional (H, W, L) object
+    cells are then given to the room around them), per-cell labels and optional (L, H, W) object
     evidence for the split. Cells are `cell_size` m wide."""
     import cv2
 
@@ -96,7 +106,9 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     furniture = np.zeros_like(walls) if furniture is None else furniture
     structural = walls | furniture
     boundaries = boundary_raster(structural, cell_size, config)
-    near_known = cv2.morphologyEx(known.astype(np.uint8), cv2.MORPH_CLOSE, _disk(0.5 / cell_size)).astype(bool)
+    side = 2 * int(round(0.5 / cell_size)) + 1  # close 0.5 m holes in the observed area (square: fast)
+    near_known = cv2.morphologyEx(known.astype(np.uint8), cv2.MORPH_CLOSE,
+                                  cv2.getStructuringElement(cv2.MORPH_RECT, (side, side))).astype(bool)
     free = near_known & ~boundaries.raster & ~structural
     n, comp, stats, _ = cv2.connectedComponentsWithStats(free.astype(np.uint8), connectivity=4)
     comp = comp.astype(np.int32)
@@ -115,36 +127,34 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                 continue
             r1, c1 = r0 + height, c0 + width
             crop = room_map[r0:r1, c0:c1]
-            evidence = (labels[r0:r1, c0:c1, None] == np.arange(n_labels)).astype(np.float32)
-            if object_evidence is not None:
-                evidence += config.object_vote_weight * object_evidence[r0:r1, c0:c1]
-            parts = _split_component(crop == room, evidence, cell_area, config, 0)
+            objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
+            parts = _split_component(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_area, config, 0)
             for part in parts[1:]:
                 crop[part] = n_rooms
                 n_rooms += 1
                 splits += 1
     margin = config.dilate / cell_size + config.close / cell_size + config.line_thickness + 2
-    room_map = _fill_margin(room_map, ~structural, margin)
-    room_map = _fill_margin(room_map, furniture, np.inf)
+    room_map = _fill_margin(room_map, ~structural, margin, furniture)
     room_labels = _majority_labels(room_map, labels, n_rooms, n_labels)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=splits, boundaries=boundaries,
                             notes=list(boundaries.notes))
 
 
-def _fill_margin(room_map: np.ndarray, allowed: np.ndarray, margin_cells: float) -> np.ndarray:
-    """Give `allowed` cells without a room, within `margin_cells` of a room, the nearest room's id."""
+def _fill_margin(room_map: np.ndarray, allowed: np.ndarray, margin_cells: float, anywhere: np.ndarray) -> np.ndarray:
+    """Give cells without a room the nearest room's id: `allowed` cells within `margin_cells` of a
+    room, and `anywhere` cells at any distance."""
     import cv2
 
-    unassigned = (room_map < 0).astype(np.uint8)
-    if not unassigned.any() or unassigned.all():
+    unassigned = room_map < 0
+    if unassigned.all() or not unassigned.any():
         return room_map
-    distance, nearest = cv2.distanceTransformWithLabels(unassigned, cv2.DIST_L2, 5,
+    distance, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
                                                         labelType=cv2.DIST_LABEL_PIXEL)
-    inside = room_map >= 0
+    inside = ~unassigned
     lut = np.full(int(nearest.max()) + 1, -1, np.int32)
     lut[nearest[inside]] = room_map[inside]
-    fill = (room_map < 0) & allowed & (distance <= margin_cells)
+    fill = unassigned & ((allowed & (distance <= margin_cells)) | anywhere)
     out = room_map.copy()
     out[fill] = lut[nearest[fill]]
     return out

@@ -16,19 +16,10 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import IesmError
-from ..frames import Frame, FrameSet, GroundTruth, Intrinsics
+from ..frames import FrameSet, GroundTruth
+from ..mapping.project import world_points
 from ..store.model import GridSpec
 from .labels import CellLabels
-
-
-def world_points(frame: Frame, intrinsics: Intrinsics, stride: int) -> np.ndarray:
-    """(M, 3) world points (m) of every `stride`-th pixel with a depth reading."""
-    v, u = np.mgrid[0:intrinsics.height:stride, 0:intrinsics.width:stride]
-    z = frame.depth[v, u]
-    ok = z > 0
-    u, v, z = u[ok], v[ok], z[ok]
-    cam = np.stack([(u - intrinsics.cx) / intrinsics.fx * z, (v - intrinsics.cy) / intrinsics.fy * z, z], axis=1)
-    return cam @ frame.pose[:3, :3].T + frame.pose[:3, 3]
 
 
 def _cells(points_xy: np.ndarray, grid: GridSpec) -> np.ndarray:
@@ -77,8 +68,12 @@ class ViewpointLabels:
         similar = _similar_types(self.names)
         n_labels = len(self.names)
         codes = []
+        k = self.frames.intrinsics
+        v, u = np.mgrid[0:k.height:self.stride, 0:k.width:self.stride]
+        sampled = (v * k.width + u).ravel()
         for frame in self.frames:
-            points = world_points(frame, self.frames.intrinsics, self.stride)
+            pixels = sampled[frame.depth.ravel()[sampled] > 0]
+            points = world_points(frame.depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose)
             points = points[points[:, 2] < self.max_height]
             camera_cell = _cells(frame.pose[None, :2, 3], self.gt.grid)[0]
             camera_type = room_type[gt_rooms[camera_cell]] if camera_cell >= 0 else -1
