@@ -8,6 +8,7 @@ y down, z forward), `pose` = 4x4 camera-to-world, world metres with z up.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -46,14 +47,21 @@ class TopDownCandidates:
         return np.repeat(np.arange(len(self), dtype=np.int64), np.diff(self.offsets))
 
 
+@lru_cache(maxsize=8)
+def _rays(height: int, width: int, fx: float, fy: float, cx: float, cy: float) -> tuple[np.ndarray, np.ndarray]:
+    """Per-pixel (u - cx) / fx and (v - cy) / fy, flat (H * W,) float32 (cached per camera)."""
+    v, u = np.divmod(np.arange(height * width), width)
+    return ((u - cx) / fx).astype(np.float32), ((v - cy) / fy).astype(np.float32)
+
+
 def world_points(depth: np.ndarray, pixels: np.ndarray, fx: float, fy: float, cx: float, cy: float,
                  pose: np.ndarray) -> np.ndarray:
-    """World points (n, 3) in metres of flat pixel indices `pixels` of `depth` (H, W) metres."""
-    width = depth.shape[1]
-    v, u = np.divmod(pixels, width)
-    z = depth.ravel()[pixels].astype(np.float64)
-    cam = np.stack([(u - cx) * z / fx, (v - cy) * z / fy, z], axis=1)
-    return cam @ pose[:3, :3].T + pose[:3, 3]
+    """World points (3, n) float32 in metres of flat pixel indices `pixels` of `depth` (H, W) metres."""
+    a, b = _rays(depth.shape[0], depth.shape[1], fx, fy, cx, cy)
+    a, b = a[pixels], b[pixels]
+    z = depth.ravel()[pixels].astype(np.float32, copy=False)
+    r, t = pose[:3, :3].astype(np.float32), pose[:3, 3].astype(np.float32)
+    return np.stack([z * (r[i, 0] * a + r[i, 1] * b + r[i, 2]) + t[i] for i in range(3)])
 
 
 def mask_points(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: float, cy: float,
@@ -64,10 +72,11 @@ def mask_points(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: 
     `masks` (K, H, W) bool, `depth` (H, W) metres (0 = none; readings beyond `max_depth` dropped).
     """
     k_all = masks.shape[0]
-    flat_masks = masks.reshape(k_all, -1)
-    usable = (depth > 0) & (depth <= max_depth) & np.isfinite(depth)
-    pixels = np.flatnonzero(usable.ravel() & flat_masks.any(axis=0))
-    k, j = np.nonzero(flat_masks[:, pixels])
+    usable = ((depth > 0) & (depth <= max_depth) & np.isfinite(depth)).ravel()
+    k, pix = np.nonzero(masks.reshape(k_all, -1))
+    ok = usable[pix]
+    k, pix = k[ok], pix[ok]
+    pixels, j = np.unique(pix, return_inverse=True)
     keys, z = pixel_cells(depth, pixels, fx, fy, cx, cy, pose, cell_size)
     return k.astype(np.int64), keys[j], z[j]
 
@@ -75,10 +84,10 @@ def mask_points(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: 
 def pixel_cells(depth: np.ndarray, pixels: np.ndarray, fx: float, fy: float, cx: float, cy: float,
                 pose: np.ndarray, cell_size: float) -> tuple[np.ndarray, np.ndarray]:
     """(global cell key, world z m) of flat pixel indices `pixels` of `depth` (H, W) metres."""
-    pts = world_points(depth, pixels, fx, fy, cx, cy, pose)
-    rows = np.floor(pts[:, 1] / cell_size).astype(np.int64)
-    cols = np.floor(pts[:, 0] / cell_size).astype(np.int64)
-    return keys_of(rows, cols), pts[:, 2]
+    x, y, z = world_points(depth, pixels, fx, fy, cx, cy, pose)
+    rows = np.floor(y / cell_size).astype(np.int64)
+    cols = np.floor(x / cell_size).astype(np.int64)
+    return keys_of(rows, cols), z
 
 
 def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: float, cy: float,
