@@ -93,3 +93,27 @@ async def test_each_map_is_a_resource_and_tools_pick_the_map(two_maps):
         assert all(i["label"] != "chair" for i in in_flat)
         goal = _payload(await client.call_tool("find_goal", {"query": "the red chair in the office", "map": "flat"}))
         assert goal["map"] == "flat" and goal["label"] != "chair"
+
+
+async def test_plan_path_to_the_found_goal(apartment_store):
+    from iesm_agent.server.tools import navigation_available
+
+    if not navigation_available():
+        pytest.skip("navigation extra (OpenCV, pyastar2d) not installed")
+    async with Client(build_server(MapService({"apartment": apartment_store}))) as client:
+        goal = _payload(await client.call_tool("find_goal", {"query": "the red chair in the office"}))
+        path = _payload(await client.call_tool("plan_path", {"instance_id": goal["instance_id"], "start": [0.5, 0.5]}))
+        assert path["status"] == "ok" and path["reachable"] and path["waypoints"][0] == [0.5, 0.5]
+        centroid = np.array(apartment_store.get_instance(goal["instance_id"])["centroid"][:2])
+        end = np.array(path["waypoints"][-1])
+        assert np.linalg.norm(end - centroid) < 1.5
+        steps = np.diff(np.array(path["waypoints"]), axis=0)
+        assert path["length_m"] == pytest.approx(np.hypot(*steps.T).sum(), rel=1e-6)
+
+        outside = _payload(await client.call_tool("plan_path", {"instance_id": goal["instance_id"], "start": [-50, 0]}))
+        assert outside["status"] == "start_outside_map" and not outside["reachable"]
+        for arguments, message in [({"instance_id": 4242, "start": [0.5, 0.5]}, "no instance with id 4242"),
+                                   ({"instance_id": 1, "start": [0.5]}, "start"),
+                                   ({"instance_id": 1, "start": "kitchen"}, "start")]:
+            bad = await client.call_tool("plan_path", arguments)
+            assert bad.is_error and message in bad.content[0].text

@@ -13,6 +13,7 @@ model's I/O still overlaps because `Retriever.aask` awaits it.
 
 from __future__ import annotations
 
+import importlib.util
 import inspect
 import typing
 from typing import Any, Callable, Literal, Optional
@@ -43,6 +44,7 @@ class MapService:
         self.maps = dict(maps or {})
         self.providers = tuple(providers)
         self._retrievers: dict[tuple[str, str, str], Any] = {}
+        self._planners: dict[str, Any] = {}
 
     @classmethod
     def open(cls, refs: list[str], providers: tuple[str, ...] = ("offline",)) -> "MapService":
@@ -93,6 +95,18 @@ class MapService:
         get_encoder()
         for name in self.maps:
             await self.find_goal("the chair", map=name)
+            if navigation_available():
+                self.planner(name)
+
+    def planner(self, map: Optional[str] = None):
+        """The `nav.PlanningGrid` of a map (inflated obstacle grid), built on first use and kept."""
+        from ..nav import PlanningGrid
+
+        store = self.store(map)
+        name = store.scene.scene_id
+        if name not in self._planners:
+            self._planners[name] = PlanningGrid(store.scene)
+        return self._planners[name]
 
     async def aclose(self) -> None:
         """Close the retrievers' model connections."""
@@ -143,6 +157,23 @@ class MapService:
         return [{"name": name, "instances": len(s.scene.instances), "rooms": len(s.scene.rooms),
                  "default": i == 0} for i, (name, s) in enumerate(self.maps.items())]
 
+    async def plan_path(self, instance_id: int, start: tuple[float, float], map: Optional[str] = None) -> dict:
+        """Plan a collision-free path from a start point to an instance (A* on the obstacle map).
+
+        Returns status ("ok", "unreachable", "start_outside_map", "start_in_obstacle", ...),
+        reachable, length_m and the waypoints [x, y] in metres from the start to a free cell
+        next to the instance.
+
+        Args:
+            instance_id: the goal instance id (e.g. find_goal's instance_id)
+            start: [x, y] start point in world metres
+            map: the served map's name (scene id; default: the first map)
+        """
+        path = self.planner(map).plan(int(instance_id), (float(start[0]), float(start[1])))
+        if path.status == "unknown_instance":
+            raise IesmError(path.message, self.store(map).scene.scene_id, "instance_id")
+        return path.model_dump(mode="json")
+
     def map_summary(self, map: str) -> dict:
         """A map's content for the MCP resource: rooms, categories and every instance in brief."""
         store = self.store(map)
@@ -174,8 +205,15 @@ class MapService:
 
     def tools(self) -> list[Callable[..., Any]]:
         """Every tool, as async functions whose signature and docstring are their schema:
-        `find_goal`, `list_maps`, then the store tools in `mapstore.TOOLS` order."""
-        return [self.find_goal, self.list_maps] + [self._store_tool(n) for n in mapstore_module.TOOLS]
+        `find_goal`, `list_maps`, `plan_path` (when the navigation extra is installed), then the
+        store tools in `mapstore.TOOLS` order. A new server-level tool is one method listed here."""
+        server_tools = [self.find_goal, self.list_maps] + ([self.plan_path] if navigation_available() else [])
+        return server_tools + [self._store_tool(n) for n in mapstore_module.TOOLS]
+
+
+def navigation_available() -> bool:
+    """Whether `plan_path` can run: `iesm_agent.nav` and its OpenCV / pyastar2d dependencies."""
+    return all(importlib.util.find_spec(m) is not None for m in ("iesm_agent.nav", "cv2", "pyastar2d"))
 
 
 def tool_specs(service: MapService | None = None) -> list[dict]:

@@ -1,0 +1,155 @@
+"""`iesm serve` over HTTP with the offline model: find_goal latency on a warm server, 40 concurrent
+calls, and one call against `iesm ask` in a fresh process.
+
+The server runs as its own process (`iesm serve apartment --http 127.0.0.1:0`, embeddings as
+installed); the client is the MCP SDK's. Queries come from the shipped apartment suites (96,
+shuffled with a fixed seed): 40 are asked one by one, each for the first time (per-query caches
+cold, the server warm), then asked again (repeats); 40 others are sent at once.
+
+Targets (DESIGN.md): find_goal on a warm server p50 <= 20 ms; 40 concurrent calls, no failure.
+
+Run: .venv/bin/python benchmarks/bench_server.py [--concurrent 40]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import random
+import re
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent))
+from results_io import record  # noqa: E402
+
+REPO = Path(__file__).resolve().parents[1]
+SUITES = ("evals/apartment_suite.jsonl", "evals/apartment_human_suite.jsonl")
+ASK_QUERY = "the red leather chair in the office"
+
+
+def queries(seed: int = 7) -> list[str]:
+    lines = [json.loads(line) for s in SUITES for line in (REPO / s).read_text().splitlines() if line.strip()]
+    out = list(dict.fromkeys(q["query"] for q in lines))
+    random.Random(seed).shuffle(out)
+    return out
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))]
+
+
+def start_server(env: dict[str, str]) -> tuple[subprocess.Popen, str, float]:
+    """The server process, its /mcp URL and its start-up time in s (maps + model loaded, warm-up query done)."""
+    started = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "iesm_agent.cli", "serve", "apartment", "--http", "127.0.0.1:0"],
+                            stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True, env=env, cwd=REPO)
+    line = proc.stderr.readline()
+    match = re.search(r"http://127\.0\.0\.1:\d+/mcp", line)
+    if not match:
+        proc.kill()
+        raise SystemExit(f"server did not start: {line}{proc.stderr.read()}")
+    return proc, match.group(0), time.perf_counter() - started
+
+
+async def timed_call(client, query: str) -> tuple[float, bool]:
+    """(wall ms, failed) of one find_goal call."""
+    t0 = time.perf_counter()
+    try:
+        result = await client.call_tool("find_goal", {"query": query})
+        failed = result.is_error or not json.loads(result.content[0].text)["found"]
+    except Exception:  # a transport failure counts as a failure, the benchmark goes on
+        failed = True
+    return (time.perf_counter() - t0) * 1000.0, failed
+
+
+async def measure(url: str, sequential: list[str], concurrent: list[str]) -> dict[str, object]:
+    from mcp import Client
+
+    async with Client(url) as client:
+        first = [await timed_call(client, q) for q in sequential]
+        repeat = [await timed_call(client, q) for q in sequential]
+        ask_warm = statistics.median([(await timed_call(client, ASK_QUERY))[0] for _ in range(5)])
+        t0 = time.perf_counter()
+        burst = await asyncio.gather(*(timed_call(client, q) for q in concurrent))
+        wall = time.perf_counter() - t0
+    return {"first": first, "repeat": repeat, "burst": burst, "burst_wall_s": wall, "ask_warm_ms": ask_warm}
+
+
+def ask_cold_s(env: dict[str, str], repeat: int = 3) -> float:
+    """Median wall time of `iesm ask apartment ASK_QUERY` in a fresh process."""
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        subprocess.run([sys.executable, "-m", "iesm_agent.cli", "ask", "apartment", ASK_QUERY], env=env, cwd=REPO,
+                       check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def run_config(env: dict[str, str], sequential: list[str], concurrent: list[str]) -> dict[str, float]:
+    """Start a server with `env`, measure, stop it, time `iesm ask` cold; the figures, printed too."""
+    proc, url, startup_s = start_server(env)
+    try:
+        m = asyncio.run(measure(url, sequential, concurrent))
+    finally:
+        proc.terminate()
+        proc.wait(timeout=30)
+    cold_ms = ask_cold_s(env) * 1000
+    first_ms = [t for t, _ in m["first"]]
+    repeat_ms = [t for t, _ in m["repeat"]]
+    burst_ms = [t for t, _ in m["burst"]]
+    out = {"startup_s": startup_s, "p50_first": statistics.median(first_ms), "p95_first": percentile(first_ms, 0.95),
+           "p50_repeat": statistics.median(repeat_ms), "p95_repeat": percentile(repeat_ms, 0.95),
+           "burst_wall_s": m["burst_wall_s"], "throughput": len(burst_ms) / m["burst_wall_s"],
+           "burst_p50": statistics.median(burst_ms), "burst_p95": percentile(burst_ms, 0.95),
+           "burst_failures": sum(failed for _, failed in m["burst"]), "burst_n": len(burst_ms),
+           "warm_ms": m["ask_warm_ms"], "cold_ms": cold_ms}
+    print(f"  server start-up (maps, model, warm-up query): {out['startup_s']:.2f} s")
+    print(f"  find_goal, {len(first_ms)} queries one by one, first time: p50 {out['p50_first']:.1f} ms, "
+          f"p95 {out['p95_first']:.1f} ms")
+    print(f"  find_goal, the same queries again: p50 {out['p50_repeat']:.1f} ms, p95 {out['p95_repeat']:.1f} ms")
+    print(f"  {out['burst_n']} concurrent find_goal calls: {out['burst_wall_s']:.2f} s wall, "
+          f"{out['throughput']:.1f} calls/s, p50 {out['burst_p50']:.1f} ms, p95 {out['burst_p95']:.1f} ms, "
+          f"{out['burst_failures']} failures")
+    print(f"  '{ASK_QUERY}': warm server {out['warm_ms']:.1f} ms vs iesm ask in a fresh process "
+          f"{cold_ms:.0f} ms ({cold_ms / out['warm_ms']:.0f}x)")
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--concurrent", type=int, default=40)
+    args = parser.parse_args()
+    env = {**os.environ, "HF_HUB_OFFLINE": "1"}
+    env.pop("IESM_TOKEN", None)
+    env.pop("IESM_EMBEDDINGS", None)
+    pool = queries()
+    sequential, concurrent = pool[:40], pool[40:40 + args.concurrent]
+    concurrent += pool[:args.concurrent - len(concurrent)]  # fewer unseen queries than asked for: reuse
+
+    print("offline model, embeddings as installed:")
+    full = run_config(env, sequential, concurrent)
+    print("offline model on lexicons only (IESM_EMBEDDINGS=0):")
+    lex = run_config({**env, "IESM_EMBEDDINGS": "0"}, sequential, concurrent)
+
+    record("serve_find_goal_p50_ms", full["p50_first"], "ms", "<= 20 ms", full["p50_first"] <= 20,
+           note=f"warm server over HTTP, each query asked for the first time; p95 {full['p95_first']:.1f} ms; "
+                f"repeated queries p50 {full['p50_repeat']:.1f} ms; lexicons only p50 {lex['p50_first']:.1f} ms")
+    record("serve_40_concurrent_failures", full["burst_failures"], "calls", "0", full["burst_failures"] == 0,
+           note=f"{full['burst_n']} calls at once: {full['throughput']:.1f} calls/s, p50 {full['burst_p50']:.0f} ms, "
+                f"p95 {full['burst_p95']:.0f} ms (lexicons only: {lex['throughput']:.0f} calls/s, "
+                f"{lex['burst_failures']} failures)")
+    record("serve_vs_ask_cold_speedup", full["cold_ms"] / full["warm_ms"], "x", "reported", True,
+           note=f"warm find_goal {full['warm_ms']:.1f} ms vs fresh iesm ask {full['cold_ms']:.0f} ms; lexicons only "
+                f"{lex['warm_ms']:.1f} ms vs {lex['cold_ms']:.0f} ms")
+
+
+if __name__ == "__main__":
+    main()
