@@ -24,6 +24,8 @@ from .suite import MapRegistry, SuiteQuery, write_suite
 from .vocab import Vocabulary, room_name
 
 TYPES: tuple[str, ...] = ("o", "or", "od", "ord", "ard")
+#: spatial referring expressions (beyond the paper), accept sets from geometry: evals/spatial_queries.py
+SPATIAL = "s"
 TOP_CATEGORIES = 30
 STRUCTURAL = {"wall", "floor", "ceiling", "doorway", "door frame", "unknown", "misc", "other", "object",
               "background", "stuff", "thing", "item"}
@@ -45,9 +47,10 @@ _ROOM_FORMS = ("in the {room}", "in the {room} area")
 
 def parse_types(text: str) -> list[str]:
     types = [t.strip() for t in text.split(",") if t.strip()]
-    unknown = [t for t in types if t not in TYPES]
+    unknown = [t for t in types if t not in (*TYPES, SPATIAL)]
     if unknown or not types:
-        raise IesmError(f"unknown query type(s) {unknown or text!r}; known: {', '.join(TYPES)}", "--types")
+        raise IesmError(f"unknown query type(s) {unknown or text!r}; known: {', '.join((*TYPES, SPATIAL))}",
+                        "--types")
     return list(dict.fromkeys(types))
 
 
@@ -208,6 +211,23 @@ def _map_ref(given: str, path: Path, out: Path) -> str:
     return Path(os.path.relpath(path, out.resolve().parent)).as_posix()
 
 
+def _add_spatial(result: GenerationResult, scene: SceneMap, ref: str, targets: list[Target],
+                 pool: list[Target], per_type: int, rng: random.Random) -> None:
+    """Append up to `per_type` type-`s` queries of one map to `result`."""
+    from ..store.mapstore import MapStore
+    from .spatial_queries import spatial_queries
+
+    by_id = {t.inst.id: t.category for t in targets}
+    order = [t.inst.id for t in pool]
+    rng.shuffle(order)
+    found = spatial_queries(MapStore(scene), [by_id[i.id] for i in scene.instances], order, per_type, rng)
+    for k, (ident, q) in enumerate(found):
+        result.queries.append(SuiteQuery(id=f"{scene.scene_id}-{SPATIAL}-{k:03d}", map=ref, query=q.text,
+                                         type=SPATIAL, target=ident, accept=list(q.accept)))
+    result.counts[ref, SPATIAL] = len(found)
+    result.shortfalls[ref, SPATIAL] = per_type - len(found)
+
+
 async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[str] = TYPES, *,
                          per_type: int = 10, seed: int = 0, model: Model | None = None,
                          vocab: Vocabulary | None = None) -> GenerationResult:
@@ -231,6 +251,9 @@ async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[s
         pool = [t for t in targets if t.category in keep]
         for qtype in types:
             rng = random.Random(f"{seed}|{scene.scene_id}|{qtype}")
+            if qtype == SPATIAL:  # template queries only: a rewrite could change the relation
+                _add_spatial(result, scene, ref, targets, pool, per_type, rng)
+                continue
             eligible = [t for t in pool if answerable(t, qtype)]
             rng.shuffle(eligible)
             jobs = []

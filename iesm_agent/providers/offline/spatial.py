@@ -17,7 +17,7 @@ import numpy as np
 
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
-from ...understanding import candidate_from_line, label_concepts, room_of
+from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
 from .prompt import Prompt
 
 #: words in spatial.j2's system block that make a ranking prompt a spatial one
@@ -50,6 +50,9 @@ _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, 
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "closest", "farthest", "between", "facing",
                    "left", "right", "front", "behind", "from", "with"}
 _WALL_WORDS = {"wall", "walls"}
+#: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
+_LANDMARK_ATTRS = ("color", "material", "size")
+_SIZE_EXTREME = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
 _INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
 
 
@@ -76,6 +79,7 @@ class SpatialQuery:
     attrs: tuple[tuple[str, str], ...] = ()
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
+    unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
 
     @property
     def words(self) -> str:
@@ -90,7 +94,7 @@ def parse_query(text: str) -> SpatialQuery:
     lemmas = [lex.lemma(t) for t in toks]
     spans = lex.scan(lemmas)
     cat_at = {s.start: s for s in spans if s.has("cat") and not s.has("room")}
-    attr_at = {s.end: s for s in spans if any(k in ("color", "material") for k, _ in s.kinds)}
+    attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
     out = SpatialQuery()
     used: set[int] = set()  # starts of cat spans taken as landmarks
 
@@ -98,7 +102,7 @@ def parse_query(text: str) -> SpatialQuery:
         found, end = [], start
         while end in attr_at:
             s = attr_at[end]
-            found += [(k, v) for k, v in s.kinds if k in ("color", "material")]
+            found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
             end = s.start
         return tuple(found)
 
@@ -200,9 +204,18 @@ def parse_query(text: str) -> SpatialQuery:
                 landmark(rel, i)
         out.relations.append(rel)
     target = next((j for j in sorted(cat_at) if j not in used), None)
+    info = analyse_query(text)
     if target is not None:
         out.target = tuple(cat_at[target].values("cat"))
         out.attrs = attrs_before(target)
+    elif info.generic and info.afford:  # "the seat closest to the tv": what serves as a seat
+        out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
+    elif info.unknown_target:
+        out.unknown_target = True
+    # a size word on the target ("the small lamp on the side table") ranks within the relation
+    out.relations += [Relation("extreme", value=_SIZE_EXTREME[v]) for k, v in out.attrs
+                      if k == "size" and v in _SIZE_EXTREME and out.relations
+                      and not any(r.kind == "extreme" for r in out.relations)]
     return out
 
 
@@ -254,6 +267,7 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     fit = np.array([max((w * lex.concept_sim(q, c) for c, w in concepts for q in cats), default=0.0)
                     for concepts in scene.concepts])
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6
+    attrs = tuple((k, v) for k, v in attrs if k != "size")  # sizes compare instances: see "extreme"
     if attrs and kind.any():
         match = kind & np.array([all(any(k == kk and lex.attr_sim(k, v, vv) >= 0.5 for kk, vv in a)
                                      for k, v in attrs) for a in scene.attrs], bool)
@@ -304,6 +318,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         if rel.landmark_where:
             where = _relation_scores(Relation(rel.landmark_where), scene, rows, facing)
             rows = rows[where >= where.max() - 1e-9]
+        for size in (v for k, v in attrs if k == "size" and v in _SIZE_EXTREME):
+            extreme = _relation_scores(Relation("extreme", value=_SIZE_EXTREME[size]), scene, rows, facing)
+            rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
     if kind in ("on", "under", "above", "below", "with"):
@@ -377,7 +394,7 @@ def rank(prompt: Prompt) -> dict:
     """Top-kappa candidate ids of the target kind by how well they satisfy the relations."""
     empty = {"ranked_instance_ids": []}
     sq = parse_query(prompt.query)
-    if not sq.relations:
+    if not sq.relations or sq.unknown_target:
         return empty
     scene = _read_scene(prompt)
     if not len(scene.boxes):

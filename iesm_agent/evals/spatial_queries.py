@@ -1,0 +1,137 @@
+"""Spatial referring expressions (query type `s`) with accept sets computed from the map's geometry.
+
+For a target with look-alikes (another instance of its spoken category), relations are tried in a
+seeded order: on / under / above a landmark (box geometry and shared grid cells), next to,
+closest to, farthest from a landmark category, and the largest / smallest / tallest of its
+category. A relation is kept only when exactly one instance of the category satisfies it (for
+superlatives: the best beats the runner-up by a clear margin); otherwise it is rejected and the
+next one is tried, so every accept set is the target alone.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+import numpy as np
+
+from ..store import geometry as geo
+from ..store.mapstore import MapStore
+
+#: a superlative needs the runner-up this much worse (metres for distances, ratio for sizes)
+DISTANCE_MARGIN = 0.3
+SIZE_RATIO = 1.25
+#: landmark categories with more instances than this are too vague to name ("the chair")
+MAX_LANDMARKS = 2
+_PHRASES = {
+    "on": ("on", "on top of", "sitting on"), "under": ("under", "beneath"), "above": ("above", "over"),
+    "near": ("next to", "beside", "near"), "closest": ("closest to", "nearest to"),
+    "farthest": ("farthest from", "furthest from"),
+    "large": ("largest", "biggest"), "small": ("smallest",), "tall": ("tallest",),
+}
+_STARTS = ("Find the {np}", "Go to the {np}", "Take me to the {np}", "The {np}", "Navigate to the {np}")
+_NOT_LANDMARKS = {"wall", "floor", "ceiling", "doorway", "door frame", "rug", "carpet", "mat"}
+
+
+@dataclass(frozen=True)
+class SpatialQuery:
+    """A generated query, the relation it states and the ids its geometry accepts (the target)."""
+
+    text: str
+    relation: str
+    accept: tuple[int, ...]
+
+
+class _Geometry:
+    """Boxes, spoken categories and stacking of one map (ground truth for the accept sets)."""
+
+    def __init__(self, store: MapStore, categories: Sequence[str]):
+        self.store = store
+        self.boxes = store.boxes
+        self.cats = np.array(categories, dtype=object)
+        self.row = {int(i): r for r, i in enumerate(self.boxes.ids)}
+
+    def of(self, category: str) -> np.ndarray:
+        return np.flatnonzero(self.cats == category)
+
+    def stacked(self, rows: np.ndarray, field: str) -> np.ndarray:
+        """(len(rows), N) bool: row's `on` / `under` geometry field lists instance j."""
+        out = np.zeros((len(rows), len(self.boxes)), bool)
+        for k, r in enumerate(rows):
+            ids = self.store.candidate_view(int(self.boxes.ids[r]), [field])[field]
+            out[k, [self.row[i] for i in ids]] = True
+        return out
+
+
+def _unique(rows: np.ndarray, ok: np.ndarray, target: int) -> bool:
+    return bool(ok.sum() == 1 and rows[ok][0] == target)
+
+
+def _best_by_margin(rows: np.ndarray, value: np.ndarray, target: int, margin: float) -> bool:
+    """`target` has the lowest value among `rows`, ahead of the runner-up by `margin`."""
+    if len(rows) < 2:
+        return False
+    order = np.argsort(value, kind="stable")
+    return bool(rows[order[0]] == target and value[order[1]] - value[order[0]] >= margin)
+
+
+def _try(g: _Geometry, target: int, relation: str, rng: random.Random) -> Optional[tuple[str, str]]:
+    """(object phrase without the target's name, relation) for `target` if `relation` singles it
+    out among its category, else None."""
+    cat = g.cats[target]
+    rows = g.of(cat)
+    tb = g.boxes.take(rows)
+    if relation in ("large", "small", "tall"):
+        magnitude = tb.size[:, 2] if relation == "tall" else tb.size.prod(axis=1)
+        order = np.argsort(magnitude if relation == "small" else -magnitude, kind="stable")
+        low, high = sorted((magnitude[order[0]], magnitude[order[1]]))
+        if rows[order[0]] != target or high < SIZE_RATIO * low:
+            return None
+        return f"{rng.choice(_PHRASES[relation])} {cat}", relation
+    marks = [c for c in dict.fromkeys(g.cats.tolist()) if c != cat and c not in _NOT_LANDMARKS
+             and 1 <= len(g.of(c)) <= MAX_LANDMARKS]
+    rng.shuffle(marks)
+    for mark in marks:
+        lrows = g.of(mark)
+        lb = g.boxes.take(lrows)
+        if relation in ("on", "under"):
+            ok = (geo.rests_on(tb, lb) if relation == "on" else geo.is_under(tb, lb)).any(axis=1)
+            ok |= g.stacked(rows, relation)[:, lrows].any(axis=1)
+            good = _unique(rows, ok, target)
+        elif relation == "above":
+            good = _unique(rows, geo.is_above(tb, lb).any(axis=1), target)
+        elif relation == "near":
+            good = _unique(rows, (geo.xy_gap(tb, lb) <= geo.NEAR_GAP / 2).any(axis=1), target) and \
+                _best_by_margin(rows, geo.xy_gap(tb, lb).min(axis=1), target, DISTANCE_MARGIN)
+        else:
+            dist = (geo.xy_gap(tb, lb) + 0.25 * geo.center_distance(tb, lb)).min(axis=1)
+            good = _best_by_margin(rows, dist if relation == "closest" else -dist, target, DISTANCE_MARGIN)
+        if good:
+            return f"{cat} {rng.choice(_PHRASES[relation])} the {mark}", relation
+    return None
+
+
+def spatial_queries(store: MapStore, categories: Sequence[str], pool: Sequence[int], per_map: int,
+                    rng: random.Random) -> list[tuple[int, SpatialQuery]]:
+    """Up to `per_map` (instance id, query) pairs for the instances `pool` (ids, tried in the
+    given order); `categories` is the spoken category of every instance in scene order."""
+    g = _Geometry(store, categories)
+    out: list[tuple[int, SpatialQuery]] = []
+    relations = ["on", "under", "above", "near", "closest", "farthest", "large", "small", "tall"]
+    for ident in pool:
+        if len(out) == per_map:
+            break
+        target = g.row[int(ident)]
+        if len(g.of(g.cats[target])) < 2:
+            continue  # nothing to tell apart
+        order = relations[:]
+        rng.shuffle(order)
+        for relation in order:
+            found = _try(g, target, relation, rng)
+            if found is not None:
+                phrase, rel = found
+                text = rng.choice(_STARTS).format(np=phrase)
+                out.append((int(ident), SpatialQuery(text=text, relation=rel, accept=(int(ident),))))
+                break
+    return out

@@ -1,0 +1,130 @@
+"""The spatial expert on tiny hand-made maps: every relation, ambiguous and missing landmarks,
+the reference block outside the candidates, and the gate weighting it."""
+
+import json
+
+import pytest
+
+from iesm_agent.config import RetrievalConfig
+from iesm_agent.providers.offline import OfflineModel
+from iesm_agent.retrieval import Retriever
+from iesm_agent.store import MapStore
+from iesm_agent.store.importers.objects import import_objects
+
+
+def box(i, label, center, size, **extra):
+    return {"id": i, "label": label, "center": list(center), "size": list(size), "room": "bedroom", **extra}
+
+
+def make_store(tmp_path, objects, name="tiny"):
+    path = tmp_path / f"{name}.json"
+    path.write_text(json.dumps({"scene_id": name, "rooms": [{"id": 1, "label": "bedroom"}], "objects": objects}))
+    return MapStore(import_objects(path))
+
+
+def spatial(store, query, kappa=2, **config):
+    r = Retriever(store, provider=OfflineModel(use_embeddings=False), method="experts:spatial",
+                  config=RetrievalConfig(kappa=kappa, **config))
+    return r.ask(query).experts.get("spatial", [])
+
+
+# A 5 m x 4 m bedroom: bed against the north wall, nightstands either side, lamps on them,
+# a desk on the west wall with a box under it, a door on the east wall, tables with cups.
+ROOM = [
+    box(1, "bed", (2.5, 3.0, 0.3), (1.6, 2.0, 0.6)),
+    box(2, "nightstand", (1.3, 3.7, 0.3), (0.4, 0.4, 0.6)),
+    box(3, "nightstand", (3.7, 3.7, 0.3), (0.4, 0.4, 0.6)),
+    box(4, "lamp", (1.3, 3.7, 0.85), (0.3, 0.3, 0.5)),
+    box(5, "lamp", (3.7, 3.7, 0.8), (0.2, 0.2, 0.4)),
+    box(6, "desk", (0.4, 1.0, 0.375), (0.8, 1.2, 0.75)),
+    box(7, "box", (0.4, 1.0, 0.15), (0.3, 0.3, 0.3)),
+    box(8, "box", (2.5, 0.3, 0.15), (0.3, 0.3, 0.3)),
+    box(9, "door", (4.98, 1.0, 1.0), (0.05, 0.9, 2.0)),
+    box(10, "chair", (4.2, 1.0, 0.45), (0.45, 0.45, 0.9), tags={"color": "red"}),
+    box(11, "chair", (3.2, 1.0, 0.45), (0.45, 0.45, 0.9), tags={"color": "blue"}),
+    box(12, "chair", (2.2, 1.0, 0.45), (0.45, 0.45, 0.9), tags={"color": "red"}),
+    box(13, "picture", (2.5, 3.98, 1.6), (0.8, 0.04, 0.6)),
+    box(14, "picture", (0.02, 2.5, 1.6), (0.04, 0.8, 0.6)),
+    box(15, "plant", (4.75, 3.75, 0.5), (0.4, 0.4, 1.0)),
+    box(16, "plant", (2.5, 2.0, 0.05), (0.3, 0.3, 0.1)),
+    box(17, "plant", (1.5, 0.25, 0.4), (0.3, 0.3, 0.8)),
+]
+
+
+@pytest.fixture(scope="module")
+def room(tmp_path_factory):
+    return make_store(tmp_path_factory.mktemp("room"), ROOM)
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the lamp on the left nightstand, facing the bed", 4),
+    ("the box under the desk", 7),
+    ("the picture above the bed", 13),
+    ("the picture over the desk", 14),
+    ("the chair next to the door", 10),
+    ("the chair closest to the desk", 12),
+    ("the chair farthest from the door", 12),
+    ("the chair between the other two chairs", 11),
+    ("the red chair near the desk", 12),
+    ("the plant in the corner", 15),
+    ("the plant in the middle of the room", 16),
+    ("the plant against the wall", 17),
+    ("the smaller of the two lamps", 5),
+    ("the largest lamp", 4),
+    ("the tallest plant", 15),
+    ("the lowest picture", 13),
+    ("the second chair from the door", 11),
+    ("facing the bed, the nightstand on the left", 2),
+    ("facing the bed, the nightstand on the right", 3),
+    ("the nightstand with the small lamp on it", 3),
+    ("the lamp between the bed and the desk", 4),
+])
+def test_each_relation_picks_the_intended_instance(room, query, best):
+    ranked = spatial(room, query)
+    assert ranked and ranked[0] == best, (query, ranked)
+
+
+def test_on_uses_the_stacking_and_the_box_heights(room):
+    assert spatial(room, "the lamp on the nightstand", kappa=3) == [4, 5]  # both stand on one
+    assert spatial(room, "the lamp on the nightstand by the door")[0] == 5
+
+
+def test_ambiguous_landmark_keeps_every_instance_that_satisfies_it(tmp_path):
+    store = make_store(tmp_path, [box(1, "table", (1, 1, 0.375), (1, 1, 0.75)),
+                                  box(2, "table", (3, 1, 0.375), (1, 1, 0.75)),
+                                  box(3, "cup", (1, 1, 0.8), (0.1, 0.1, 0.1)),
+                                  box(4, "cup", (3, 1, 0.8), (0.1, 0.1, 0.1)),
+                                  box(5, "cup", (2, 3, 0.05), (0.1, 0.1, 0.1))])
+    assert sorted(spatial(store, "the cup on the table", kappa=3)[:2]) == [3, 4]
+
+
+@pytest.mark.parametrize("query", ["the chair next to the piano", "the lamp on the fireplace",
+                                   "the chair between the door and the piano"])
+def test_missing_landmark_gives_no_ranking(room, query):
+    assert spatial(room, query) == []
+
+
+@pytest.mark.parametrize("query", ["the red chair", "find the lamp in the bedroom", "the unicorn on the bed"])
+def test_no_relation_or_no_target_gives_no_ranking(room, query):
+    assert spatial(room, query) == []
+
+
+def test_landmarks_outside_the_candidates_come_from_the_reference_block(tmp_path):
+    chairs = [box(i, "chair", (float(i), 1.0, 0.45), (0.45, 0.45, 0.9)) for i in range(1, 7)]
+    store = make_store(tmp_path, chairs + [box(20, "fireplace", (5.0, 2.5, 0.5), (1.2, 0.4, 1.0))])
+    # three candidates (chairs 1-3): the fireplace is only a reference object, still resolved
+    assert spatial(store, "the chair closest to the fireplace", max_candidates=3) == [3, 2]
+
+
+def test_gate_weighs_the_spatial_expert_only_for_relations(room):
+    r = Retriever(room, provider=OfflineModel(use_embeddings=False))
+    rel = r.ask("the chair closest to the desk")
+    assert rel.gate["spatial"] > 0.5 and rel.instance_id == 12
+    assert all(w <= rel.gate["spatial"] / 4 + 1e-9 for n, w in rel.gate.items() if n != "spatial")
+    plain = r.ask("the blue chair")
+    assert plain.gate["spatial"] == 0.0 and plain.experts.get("spatial", []) == [] and plain.instance_id == 11
+
+
+def test_without_the_spatial_expert_the_relation_is_lost(room):
+    r = Retriever(room, provider=OfflineModel(use_embeddings=False), method="experts:abs,desc,obj,room")
+    assert r.ask("the chair closest to the desk").instance_id != 12
