@@ -1,0 +1,166 @@
+"""The five-scene mapping study (paper Tables 1-3 on simulated scenes), one command:
+
+    python -m iesm_agent.mapping.study --seeds 0-4 --out evals/mapping
+
+For each seed: generate a scene and render its frames (iesm_agent.sim), build our 2.5D map with
+and without the second pass and the VLMaps-style 2D point-wise map from the same frames and
+masks, score all three against the ground truth, and write OUT/table.md + OUT/summary.json.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Optional
+
+import numpy as np
+
+from ..config import MappingConfig
+from ..frames import FrameSet, GroundTruth
+from .baseline2d import PointwiseMap2D
+from .build import MapBuilder, category_vectors
+from .evaluate import EvalContext, prediction_from_map, prediction_from_pointwise, score
+
+METHODS = ("ours", "ours_no_second_pass", "pointwise_2d")
+TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass", "pointwise_2d": "2D point-wise + GT mask"}
+
+
+def study_scene(frames_dir: Path, cfg: MappingConfig) -> dict:
+    """Metrics of the three methods on one frame directory (with gt/)."""
+    frames = FrameSet.open(frames_dir)
+    cfg = cfg.model_copy(update={"cell_size": frames.meta.cell_size})
+    categories, e = category_vectors(frames)
+    builder, flat2d = MapBuilder(frames.intrinsics, cfg), PointwiseMap2D(frames.intrinsics, e, cfg)
+    t0 = time.perf_counter()
+    for frame in frames:
+        builder.add(frame, frame.segmentation)
+        flat2d.add(frame, frame.segmentation)
+    kw = dict(scene_id=frames.meta.scene_id, embedding_space=frames.meta.embedding_space)
+    maps = {"ours": builder.finish(categories, e, second_pass=True, **kw),
+            "ours_no_second_pass": builder.finish(categories, e, second_pass=False, **kw)}
+    build_s = time.perf_counter() - t0
+    ctx = EvalContext.create(GroundTruth.load(frames_dir), frames_dir, cfg)
+    out = {name: score(prediction_from_map(scene, ctx), ctx) for name, scene in maps.items()}
+    keys, scores = flat2d.finish()
+    out["pointwise_2d"] = score(prediction_from_pointwise(keys, scores, cfg.cell_size, ctx), ctx)
+    out["scene"] = {"scene_id": frames.meta.scene_id, "frames": len(frames), "build_s": round(build_s, 2),
+                    "embedding_space": frames.meta.embedding_space, "gt_instances": len(ctx.gt_ids),
+                    "small_categories": sorted(ctx.small_labels), "stacked": len(ctx.stacked)}
+    return out
+
+
+def _mean(results: list[dict], path: tuple[str, ...]) -> Optional[float]:
+    values = []
+    for r in results:
+        for key in path:
+            r = r.get(key) if isinstance(r, dict) else None
+        if r is None:
+            return None
+        values.append(float(r))
+    return float(np.mean(values))
+
+
+COLUMNS = [  # (group, header, path into a method's result, shown for the 2D baseline)
+    ("all", "AUC pred", ("auc_top", "pred"), False), ("all", "AUC gt", ("auc_top", "gt"), False),
+    ("all", "AUC match", ("auc_top", "match"), True), ("all", "top-1 match", ("auc_top", "top1_match"), True),
+    ("all", "Inst. Diff", ("instance_diff",), False),
+    ("topdown", "Acc", ("topdown", "acc"), True), ("topdown", "mAcc", ("topdown", "macc"), True),
+    ("topdown", "mIoU", ("topdown", "miou"), True), ("topdown", "F-mIoU", ("topdown", "fmiou"), True),
+    ("small", "AUC pred", ("small", "auc_top", "pred"), False), ("small", "AUC gt", ("small", "auc_top", "gt"), False),
+    ("small", "AUC match", ("small", "auc_top", "match"), True),
+    ("small", "top-1 match", ("small", "auc_top", "top1_match"), True),
+    ("small", "Inst. Diff", ("small", "instance_diff"), False),
+    ("stacked", "top-1 match", ("stacked", "top1_match"), True), ("stacked", "top-1 gt", ("stacked", "top1_gt"), True),
+    ("stacked", "AUC match", ("stacked", "auc_top_match"), True),
+]
+GROUPS = {"all": "Instances (Table 1)", "topdown": "Top-down label map (Table 2)",
+          "small": "Small objects (Table 3)", "stacked": "Stacked objects"}
+
+
+def summarise(per_scene: dict[str, dict]) -> dict:
+    """Mean of every column over the scenes, per method (None where a method has no value)."""
+    results = list(per_scene.values())
+    return {m: {f"{g}.{h}": (_mean([r[m] for r in results], path) if shown or m != "pointwise_2d" else None)
+                for g, h, path, shown in COLUMNS} for m in METHODS}
+
+
+def table_markdown(mean: dict, per_scene: dict[str, dict]) -> str:
+    lines = [f"Mean over {len(per_scene)} simulated scenes ({', '.join(per_scene)}). Higher is better except "
+             "Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
+             "construction (as in the paper's Table 1).", ""]
+    for group, title in GROUPS.items():
+        cols = [(h, f"{g}.{h}") for g, h, _p, _s in COLUMNS if g == group]
+        lines += [f"### {title}", "", "| method | " + " | ".join(h for h, _ in cols) + " |",
+                  "|---|" + "---:|" * len(cols)]
+        for m in METHODS:
+            cells = [("-" if mean[m][k] is None else (f"{mean[m][k]:.1f}" if "Diff" in h else f"{mean[m][k]:.3f}"))
+                     for h, k in cols]
+            lines.append(f"| {TITLES[m]} | " + " | ".join(cells) + " |")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def parse_seeds(text: str) -> list[int]:
+    """'0-4' or '0,3,7' -> seeds."""
+    seeds: list[int] = []
+    for part in text.split(","):
+        lo, _, hi = part.partition("-")
+        seeds += list(range(int(lo), int(hi) + 1)) if hi else [int(lo)]
+    return seeds
+
+
+def _write(path: Path, text: str) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
+    with os.fdopen(fd, "w") as fh:
+        fh.write(text)
+    os.replace(tmp, path)
+
+
+def run_study(seeds: list[int], out: Path, *, size: str = "small", frames_root: Optional[Path] = None,
+              space: Optional[str] = None, log=print) -> dict:
+    """Render (or reuse, under `frames_root`) each seed's frames, study them, write table.md and summary.json."""
+    from ..sim import generate_scene, render_frames
+
+    out.mkdir(parents=True, exist_ok=True)
+    cfg = MappingConfig()
+    per_scene: dict[str, dict] = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        root = frames_root or Path(tmp)
+        for seed in seeds:
+            frames_dir = root / f"{size}-{seed}"
+            if not (frames_dir / "gt" / "cells.npz").is_file():
+                render_frames(generate_scene(seed, size), frames_dir, space=space)
+            result = study_scene(frames_dir, cfg)
+            per_scene[result["scene"]["scene_id"]] = result
+            o = result["ours"]
+            log(f"{result['scene']['scene_id']}: AUC match {o['auc_top']['match']:.3f}, Inst. Diff "
+                f"{o['instance_diff']} (w/o 2nd pass {result['ours_no_second_pass']['instance_diff']})")
+    mean = summarise(per_scene)
+    summary = {"seeds": seeds, "size": size, "config": cfg.model_dump(), "mean": mean, "scenes": per_scene}
+    _write(out / "summary.json", json.dumps(summary, indent=1) + "\n")
+    _write(out / "table.md", "# Mapping study\n\nCommand: `python -m iesm_agent.mapping.study --seeds "
+           f"{','.join(map(str, seeds))} --out {out}`\n\n" + table_markdown(mean, per_scene))
+    return summary
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m iesm_agent.mapping.study", description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", default="0-4")
+    parser.add_argument("--out", type=Path, default=Path("evals/mapping"))
+    parser.add_argument("--size", default="small", choices=["small", "hm3d"])
+    parser.add_argument("--frames", type=Path, default=None, help="keep (and reuse) the rendered frames here")
+    parser.add_argument("--space", default=None, help="embedding space (default: the best available)")
+    args = parser.parse_args(argv)
+    run_study(parse_seeds(args.seeds), args.out, size=args.size, frames_root=args.frames, space=args.space,
+              log=lambda line: print(line, file=sys.stderr))
+    print((args.out / "table.md").read_text())
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
