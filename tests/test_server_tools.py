@@ -125,3 +125,21 @@ def test_concurrent_calls_agree_with_sequential_ones(service):
 def test_duplicate_scene_ids_are_refused():
     with pytest.raises(IesmError, match="share the scene id 'apartment'"):
         MapService.open(["apartment", "apartment"])
+
+
+def test_call_tool_validates_and_dispatches(service, apartment_store):
+    rooms = asyncio.run(service.call_tool("list_rooms", {}))
+    assert rooms == apartment_store.list_rooms()
+    near = asyncio.run(service.call_tool("instances_near", {"x": "1.5", "y": 2, "radius": 3}))
+    assert near == apartment_store.instances_near(1.5, 2.0, radius=3.0)
+    goal = asyncio.run(service.call_tool("find_goal", {"query": "the lamp next to the bed"}))
+    assert (goal["label"], goal["room"]) == ("lamp", "bedroom")
+    for name, arguments, message in [
+        ("teleport", {}, "unknown tool 'teleport'"),
+        ("get_instance", {"instance_id": "seven"}, "bad arguments for get_instance: instance_id:"),
+        ("get_instance", {}, "instance_id: Field required"),
+        ("list_rooms", {"floor": 2}, "floor: Extra inputs are not permitted"),
+        ("get_instance", {"instance_id": 4242}, "unknown instance id 4242"),
+    ]:
+        with pytest.raises(IesmError, match=message):
+            asyncio.run(service.call_tool(name, arguments))

@@ -18,6 +18,8 @@ import inspect
 import typing
 from typing import Any, Callable, Literal, Optional
 
+from pydantic import BaseModel, ConfigDict, ValidationError, create_model
+
 from ..errors import IesmError
 from ..store import MapStore
 from ..store import mapstore as mapstore_module
@@ -203,12 +205,35 @@ class MapService:
         tool.__annotations__ = {**{p.name: p.annotation for p in params}, "return": hints.get("return", Any)}
         return tool
 
+    async def call_tool(self, name: str, arguments: dict[str, Any]) -> Any:
+        """Run tool `name` with JSON `arguments` (a function-calling loop's dispatcher): arguments
+        are validated against the tool's signature; unknown tools, bad arguments and unknown
+        maps or ids raise `IesmError`."""
+        tool = next((t for t in self.tools() if t.__name__ == name), None)
+        if tool is None:
+            raise IesmError(f"unknown tool {name!r}; known: {', '.join(t.__name__ for t in self.tools())}",
+                            None, "name")
+        try:
+            valid = arguments_model(tool).model_validate(arguments)
+        except ValidationError as exc:
+            problems = "; ".join(f"{'.'.join(map(str, e['loc'])) or 'arguments'}: {e['msg']}" for e in exc.errors())
+            raise IesmError(f"bad arguments for {name}: {problems}", None, "arguments") from None
+        return await tool(**{field: getattr(valid, field) for field in type(valid).model_fields})
+
     def tools(self) -> list[Callable[..., Any]]:
         """Every tool, as async functions whose signature and docstring are their schema:
         `find_goal`, `list_maps`, `plan_path` (when the navigation extra is installed), then the
         store tools in `mapstore.TOOLS` order. A new server-level tool is one method listed here."""
         server_tools = [self.find_goal, self.list_maps] + ([self.plan_path] if navigation_available() else [])
         return server_tools + [self._store_tool(n) for n in mapstore_module.TOOLS]
+
+
+def arguments_model(tool: Callable[..., Any]) -> type[BaseModel]:
+    """A pydantic model of `tool`'s parameters (unknown arguments are refused)."""
+    hints = typing.get_type_hints(tool)
+    fields = {p.name: (hints.get(p.name, Any), ... if p.default is p.empty else p.default)
+              for p in inspect.signature(tool).parameters.values()}
+    return create_model(f"{tool.__name__}_arguments", __config__=ConfigDict(extra="forbid"), **fields)
 
 
 def navigation_available() -> bool:
