@@ -39,6 +39,19 @@ def test_colour_names_people_use(rgb, name):
     assert colour_name(rgb) == name
 
 
+def test_shading_aware_naming_keeps_white_white_in_shade_and_grey_grey():
+    table = colour_table()
+
+    def named(rgb, shading=True):
+        return table.names[int(name_lab(rgb_to_lab(np.array(rgb, np.float64)), shading))]
+
+    assert named((230, 230, 230), shading=False) == "light grey"  # the plain nearest name
+    assert named((230, 230, 230)) == "white"  # white in shade: pixels are never brighter than the surface
+    assert named((0xD8, 0xDC, 0xD6)) == "light grey"  # a grey that fits as it is stays grey
+    assert named((0x92, 0x95, 0x91)) == "grey"
+    assert named((0xE6 * 0.9, 0xDA * 0.9, 0xA6 * 0.9)) == "beige"
+
+
 def test_masked_lab_ignores_unmasked_pixels_and_shadowed_faces():
     navy = np.array([0x01, 0x15, 0x3E], np.float64)
     img = np.zeros((40, 40, 3), np.uint8)

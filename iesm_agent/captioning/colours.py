@@ -16,6 +16,10 @@ import numpy as np
 
 #: the pixels whose lightness lies between these percentiles set the colour (see `masked_lab`)
 LIGHTNESS_BAND = (50.0, 90.0)
+#: shading factors (fractions of full light, applied in linear RGB) a named colour may be seen at
+SHADING = np.linspace(0.5, 1.0, 11)
+#: CIEDE2000 units charged per unit of shading assumed (1 - s): at equal fit, less shading wins
+SHADING_COST = 8.0
 
 
 @dataclass(frozen=True)
@@ -25,6 +29,15 @@ class ColourTable:
     names: tuple[str, ...]
     families: tuple[str, ...]
     lab: np.ndarray
+    shaded_lab: np.ndarray  # (len(SHADING), N, 3): each colour under each shading factor
+
+
+def _shade(rgb: np.ndarray, factor: float) -> np.ndarray:
+    """sRGB (0-255) of colours `rgb` (N, 3) under `factor` of full light (scaled in linear RGB)."""
+    c = np.asarray(rgb, np.float64) / 255.0
+    linear = np.where(c > 0.04045, ((c + 0.055) / 1.055) ** 2.4, c / 12.92) * factor
+    srgb = np.where(linear > 0.0031308, 1.055 * np.power(linear, 1 / 2.4) - 0.055, 12.92 * linear)
+    return srgb * 255.0
 
 
 def rgb_to_lab(rgb: np.ndarray) -> np.ndarray:
@@ -43,7 +56,8 @@ def colour_table() -> ColourTable:
     data = json.loads(resources.files(__package__).joinpath("data/colours.json").read_text("utf-8"))
     rows = data["colours"]
     rgb = np.array([[int(r["hex"][i:i + 2], 16) for i in (1, 3, 5)] for r in rows], np.float64)
-    return ColourTable(tuple(r["name"] for r in rows), tuple(r["family"] for r in rows), rgb_to_lab(rgb))
+    shaded = np.stack([rgb_to_lab(_shade(rgb, f)) for f in SHADING])
+    return ColourTable(tuple(r["name"] for r in rows), tuple(r["family"] for r in rows), rgb_to_lab(rgb), shaded)
 
 
 def ciede2000(lab1: np.ndarray, lab2: np.ndarray) -> np.ndarray:
@@ -77,12 +91,20 @@ def ciede2000(lab1: np.ndarray, lab2: np.ndarray) -> np.ndarray:
     return np.sqrt((dlp / s_l) ** 2 + (dcp / s_c) ** 2 + (dhp / s_h) ** 2 + r_t * (dcp / s_c) * (dhp / s_h))
 
 
-def name_lab(lab: np.ndarray) -> np.ndarray:
-    """Indices into `colour_table()` of the nearest named colour (CIEDE2000) for (..., 3) Lab."""
+def name_lab(lab: np.ndarray, shading: bool = True) -> np.ndarray:
+    """Indices into `colour_table()` of the best named colour for (..., 3) Lab.
+
+    Plain: the nearest name under CIEDE2000. With `shading`, a surface is taken to show its
+    colour dimmed by some factor s in `SHADING` (pixels are never brighter than the surface
+    under full light): a name's distance is min over s of CIEDE2000(pixel, name under s) +
+    `SHADING_COST` (1 - s), so white seen in shade is still white, while a grey that fits
+    as it is stays grey."""
     table = colour_table()
     lab = np.asarray(lab, np.float64)
-    d = ciede2000(lab[..., None, :], table.lab)
-    return np.argmin(d, axis=-1)
+    if not shading:
+        return np.argmin(ciede2000(lab[..., None, :], table.lab), axis=-1)
+    d = ciede2000(lab[..., None, None, :], table.shaded_lab) + SHADING_COST * (1 - SHADING)[:, None]
+    return np.argmin(d.min(axis=-2), axis=-1)
 
 
 def colour_name(rgb: np.ndarray | tuple[int, int, int]) -> str:

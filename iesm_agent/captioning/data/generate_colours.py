@@ -18,7 +18,7 @@ from pathlib import Path
 N_COMMON = 150
 EXCLUDED = {"puke", "puke green", "vomit", "baby poop", "poop", "shit", "barney", "neon green",
             "neon purple", "neon pink", "electric lime", "robin's egg blue"}
-EXTRA = ("silver", "ivory", "gunmetal", "warm grey", "greyish brown", "medium grey", "steel grey",
+EXTRA = ("ivory", "warm grey", "greyish brown", "medium grey", "steel grey",
          "mahogany", "camel", "coffee", "mocha", "dark beige", "light beige", "charcoal", "cool grey",
          "off white")
 
