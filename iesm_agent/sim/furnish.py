@@ -21,7 +21,7 @@ from .world import WALL_HEIGHT, WorldBuilder, footprint_slices
 # wall / back direction (dx, dy) -> quarter turns that put an item's back (local -y) on that side
 _TURNS = {(0, -1): 0, (1, 0): 1, (0, 1): 2, (-1, 0): 3}
 _DIRS = list(_TURNS)
-GAP = 0.02  # m between an item and the wall or its neighbour
+GAP = 0.03  # m between an item and the wall or its neighbour (> half a grid cell)
 
 
 @dataclass
@@ -50,7 +50,9 @@ class Furnisher:
 
     # -- geometry helpers
     def _fits(self, room: int, rect, clearance: float = 0.0) -> bool:
+        """Every cell within half a cell (plus `clearance`) of the footprint is in `room` and free."""
         x0, x1, y0, y1 = rect
+        clearance += self.grid.cell_size / 2 + 1e-3
         rows, cols = footprint_slices(self.grid, (x0 - clearance, y0 - clearance), (x1 + clearance, y1 + clearance))
         want = ((x1 - x0 + 2 * clearance) / self.grid.cell_size) * ((y1 - y0 + 2 * clearance) / self.grid.cell_size)
         cells = self.rooms[rows, cols]
@@ -89,7 +91,7 @@ class Furnisher:
         lo, hi = world_boxes[:, 0].min(axis=0), world_boxes[:, 1].max(axis=0)
         rect = (lo[0], hi[0], lo[1], hi[1])
         if mark:
-            self.taken[footprint_slices(self.grid, lo - GAP, hi + GAP)] = True
+            self.taken[footprint_slices(self.grid, lo, hi)] = True
         return Placed(spec, iid, rect, k, back, float(hi[2]), place_surfaces(surfaces, k, center, z0))
 
     @staticmethod
@@ -152,9 +154,9 @@ class Furnisher:
             for t in (np.arange(n) + 0.5) / n:
                 if side[1]:
                     slots.append((_TURNS[side], (x0 + t * (x1 - x0), (y1 if side[1] > 0 else y0)
-                                                 + side[1] * (d / 2 + 0.05)), None))
+                                                 + side[1] * (d / 2 + GAP)), None))
                 else:
-                    slots.append((_TURNS[side], ((x1 if side[0] > 0 else x0) + side[0] * (d / 2 + 0.05),
+                    slots.append((_TURNS[side], ((x1 if side[0] > 0 else x0) + side[0] * (d / 2 + GAP),
                                                  y0 + t * (y1 - y0)), None))
         order = self.rng.permutation(len(slots))
         return [slots[i] for i in order]
@@ -177,6 +179,12 @@ class Furnisher:
             center = (center[0] + bx * GAP, center[1])
         else:
             center = (center[0], center[1] + by * GAP)
+        boxes = place_boxes(self._local(spec)[0], anchor.k, center, z0)
+        existing = np.array(self.builder.boxes)
+        lo = np.maximum(existing[:, None, 0], boxes[None, :, 0])
+        hi = np.minimum(existing[:, None, 1], boxes[None, :, 1])
+        if np.any(np.all(hi > lo, axis=-1)):  # e.g. a window in the way
+            return None
         return self._commit(spec, room, anchor.k, center, anchor.back, z0=z0, mark=False)
 
     def place_furniture(self, spec: ItemSpec, room: int, anchor: Optional[Placed]) -> list[Placed]:
