@@ -106,6 +106,16 @@ def test_retrievers_stay_warm_per_map_method_provider(service):
     first = service.retriever(None, "mtefr", None)
     assert service.retriever("apartment", "mtefr", "offline") is first
     assert service.retriever(None, "spr", None) is not first
+    obj = service.retriever(None, "experts:obj", None)
+    for spelling in ("experts: obj", "experts:obj,obj", "experts:obj,,obj "):
+        assert service.retriever(None, spelling, None) is obj
+    assert len(service._retrievers) == 3
+
+
+def test_long_text_arguments_of_store_tools_are_refused(service):
+    with pytest.raises(IesmError, match=f"text: 100000 characters; at most {MAX_QUERY_CHARS}"):
+        asyncio.run(service.call_tool("find_instances", {"text": "lamp " * 20_000}))
+    assert asyncio.run(service.call_tool("find_instances", {"text": "lamp"}))[0]["label"] == "lamp"
 
 
 def test_concurrent_calls_agree_with_sequential_ones(service):

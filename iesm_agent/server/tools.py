@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import importlib.util
 import inspect
+import sys
 import typing
 from typing import Any, Callable, Literal, Optional
 
@@ -25,11 +26,13 @@ from ..store import MapStore
 from ..store import mapstore as mapstore_module
 from ..store.tools import function_schema
 
-#: longest query find_goal accepts, in characters
+#: longest query (or other text argument) a tool accepts, in characters
 MAX_QUERY_CHARS = 2000
 #: ids of the top of the fused ranking find_goal reports
 RANKING_SHOWN = 5
 SPEC_FORMATS = ("json", "openai", "mcp")
+#: answered once per map at start-up; descriptive, so the offline model's embedding path is warm too
+WARM_UP_QUERY = "a cosy blue wooden seat for reading near the window in the living room"
 _MAP_ARG_DOC = "\n\nArgs:\n    map: the served map's name (scene id; default: the first map)"
 
 
@@ -84,19 +87,25 @@ class MapService:
             raise IesmError(f"provider {provider!r} is not enabled on this server; enabled: "
                             f"{', '.join(self.providers)}", None, "provider")
         key = (store.scene.scene_id, method.strip(), provider)
-        if key not in self._retrievers:
-            self._retrievers[key] = Retriever(store, provider=provider, method=method,
-                                              cache=False if provider == "offline" else None)
-        return self._retrievers[key]
+        if key in self._retrievers:
+            return self._retrievers[key]
+        # remote answers go to the response cache, as with `iesm ask`
+        fresh = Retriever(store, provider=provider, method=method, cache=provider != "offline")
+        # kept under the normalised method ("experts: obj,obj" -> "experts:obj"): a bounded set
+        return self._retrievers.setdefault((key[0], fresh.method, provider), fresh)
 
     async def warm_up(self) -> None:
-        """Load the embedding model (when installed) and answer one query per map, so that the
-        first caller pays no start-up cost."""
+        """Load the embedding model (when installed), answer a descriptive query per map with the
+        default provider and build the planning grids, so that the first caller pays no start-up
+        cost. A failing warm-up query (a dead endpoint) is reported on stderr, not raised."""
         from ..embeddings import get_encoder
 
         get_encoder()
         for name in self.maps:
-            await self.find_goal("the chair", map=name)
+            try:
+                await self.find_goal(WARM_UP_QUERY, map=name)
+            except IesmError as exc:
+                print(f"iesm serve: warning: warm-up query on {name} failed: {exc}", file=sys.stderr)
             if navigation_available():
                 self.planner(name)
 
@@ -197,6 +206,9 @@ class MapService:
 
         async def tool(**arguments: Any) -> Any:
             store = self.store(arguments.pop("map", None))
+            for arg, value in arguments.items():
+                if isinstance(value, str) and len(value) > MAX_QUERY_CHARS:
+                    raise IesmError(f"{len(value)} characters; at most {MAX_QUERY_CHARS} are accepted", None, arg)
             return getattr(store, name)(**arguments)
 
         tool.__name__ = tool.__qualname__ = name
