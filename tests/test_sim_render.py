@@ -74,3 +74,20 @@ def test_same_pose_and_seed_render_identically():
     b = renderer.render(world.poses[3], np.random.default_rng(4))
     assert np.array_equal(a.rgb, b.rgb) and np.array_equal(a.depth, b.depth)
     assert len(np.unique(a.instance_ids)) > 3
+
+
+def test_pixel_colours_name_the_ground_truth_colour():
+    from iesm_agent.sim.catalog import COLORS
+
+    world = generate_scene(0, "small")
+    renderer = BoxRenderer(world.boxes, world.box_rgb(), world.box_instance, world.intrinsics, ceiling=2.6)
+    names, palette = list(COLORS), np.array(list(COLORS.values()), float)
+    pixels: dict[int, list[np.ndarray]] = {}
+    rng = np.random.default_rng(0)
+    for pose in world.poses[::3]:
+        frame = renderer.render(pose, rng)
+        for i in np.unique(frame.instance_ids[frame.instance_ids > 0]):
+            pixels.setdefault(int(i), []).append(frame.rgb[frame.instance_ids == i])
+    hits = [names[int(np.argmin(((palette - np.median(np.concatenate(p), 0)) ** 2).sum(1)))]
+            == world.instances[i - 1].color for i, p in pixels.items()]
+    assert len(hits) > 50 and np.mean(hits) >= 0.95
