@@ -99,8 +99,8 @@ def _shift(mask: np.ndarray, dr: int, dc: int) -> np.ndarray:
 
 def _grow(grid: np.ndarray, targets: dict[int, int], rng: np.random.Generator) -> None:
     """Grow seeded rooms in place: rectangles first, then L-shapes, then fill every free cell (0)."""
-    rects = {i: list(zip(*np.nonzero(grid == i)))[0] for i in targets}
-    rects = {i: [r, r + 1, c, c + 1] for i, (r, c) in rects.items()}
+    seeds = {i: np.argwhere(grid == i)[0] for i in targets}
+    rects = {i: [r, r + 1, c, c + 1] for i, (r, c) in seeds.items()}  # [r0, r1) x [c0, c1)
     area = {i: 1 for i in targets}
     active = set(targets)
     while active:  # rectangular growth, the room furthest below its target first
@@ -224,9 +224,9 @@ def _choose_doors(labels: dict[int, str], runs: list[WallRun], open_pair: tuple[
                   rng: np.random.Generator) -> list[Door] | None:
     """Doors along a spanning tree (public-public, then public-private, then private-private
     edges), plus a few extra public-public doors; None when some room cannot be reached."""
-    longest: dict[tuple[int, int], WallRun] = {}
-    for run in runs:
-        if run.a > 0 and run.length >= MIN_DOOR_RUN and run.length > longest.get((run.a, run.b), run).length - 1e-9:
+    longest: dict[tuple[int, int], WallRun] = {}  # the longest shared run of each pair of rooms
+    for run in sorted(runs, key=lambda r: r.length):
+        if run.a > 0 and run.length >= MIN_DOOR_RUN:
             longest[(run.a, run.b)] = run
 
     def rank(pair: tuple[int, int]) -> int:

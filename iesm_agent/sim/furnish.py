@@ -21,7 +21,7 @@ from .world import WALL_HEIGHT, WorldBuilder, footprint_slices
 # wall / back direction (dx, dy) -> quarter turns that put an item's back (local -y) on that side
 _TURNS = {(0, -1): 0, (1, 0): 1, (0, 1): 2, (-1, 0): 3}
 _DIRS = list(_TURNS)
-GAP = 0.03  # m between an item and the wall or its neighbour (> half a grid cell)
+GAP = 0.06  # m between an item and the wall or its neighbour (> one grid cell, see _fits)
 
 
 @dataclass
@@ -50,7 +50,9 @@ class Furnisher:
 
     # -- geometry helpers
     def _fits(self, room: int, rect, clearance: float = 0.0) -> bool:
-        """Every cell within half a cell (plus `clearance`) of the footprint is in `room` and free."""
+        """Every cell within half a cell (plus `clearance`) of the footprint is in `room` and free.
+        Items mark the cells within half a cell of their footprint as taken, so two footprints that
+        overlap always share a checked cell, and two GAP apart never do."""
         x0, x1, y0, y1 = rect
         clearance += self.grid.cell_size / 2 + 1e-3
         rows, cols = footprint_slices(self.grid, (x0 - clearance, y0 - clearance), (x1 + clearance, y1 + clearance))
@@ -91,7 +93,7 @@ class Furnisher:
         lo, hi = world_boxes[:, 0].min(axis=0), world_boxes[:, 1].max(axis=0)
         rect = (lo[0], hi[0], lo[1], hi[1])
         if mark:
-            self.taken[footprint_slices(self.grid, lo, hi)] = True
+            self.taken[footprint_slices(self.grid, lo - self.grid.cell_size / 2, hi + self.grid.cell_size / 2)] = True
         return Placed(spec, iid, rect, k, back, float(hi[2]), place_surfaces(surfaces, k, center, z0))
 
     @staticmethod

@@ -14,7 +14,7 @@ import numpy as np
 from ..frames import Intrinsics
 from ..store.model import GridSpec, InstanceGrid
 from .catalog import COLORS, WALL_COLORS
-from .floorplan import CELL, DOOR_WIDTH, FloorPlan
+from .floorplan import CELL, DOOR_WIDTH, FloorPlan, WallRun
 
 WALL_HEIGHT = 2.6  # m, also the ceiling
 WALL_T = 0.1  # wall thickness, m
@@ -128,7 +128,7 @@ class WorldBuilder:
         return inst.id
 
 
-def _run_box(run, a: float, b: float, z0: float, z1: float, thickness: float) -> np.ndarray:
+def _run_box(run: WallRun, a: float, b: float, z0: float, z1: float, thickness: float) -> np.ndarray:
     """Box of the piece [a, b] (metres along `run`) of a wall run, `thickness` across it."""
     lo_across, hi_across = run.coord - thickness / 2, run.coord + thickness / 2
     if run.along_x:
@@ -151,7 +151,7 @@ def build_structure(plan: FloorPlan, builder: WorldBuilder, rng: np.random.Gener
     doors = {door.run: door for door in plan.doors}
     open_pairs = set(plan.open_pairs)
     keep_out = []
-    window_runs: dict[int, object] = {}
+    window_runs: dict[int, WallRun] = {}  # room -> its longest outside wall
     for run in plan.runs:
         if (run.a, run.b) in open_pairs:
             continue
@@ -176,7 +176,7 @@ def build_structure(plan: FloorPlan, builder: WorldBuilder, rng: np.random.Gener
                 builder.add("wall", wall_color, "plaster", room, _run_box(run, a, b, 0.0, WALL_HEIGHT, WALL_T),
                             structural=True)
         if run.a == -1 and plan.labels[run.b] not in ("hallway", "storage room") and run.length >= 1.6:
-            if run.length > getattr(window_runs.get(run.b), "length", 0.0):
+            if run.b not in window_runs or run.length > window_runs[run.b].length:
                 window_runs[run.b] = run
     for room, run in sorted(window_runs.items()):
         width = min(1.4, run.length - 0.6)
