@@ -53,6 +53,9 @@ _WALL_WORDS = {"wall", "walls"}
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
 _LANDMARK_ATTRS = ("color", "material", "size")
 _SIZE_EXTREME = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
+#: "on" after these verbs states a use, not a place ("where can I work on my computer")
+_USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
+              "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
 _INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
 
 
@@ -152,6 +155,8 @@ def parse_query(text: str) -> SpatialQuery:
         i += len(words)
         if kind == "on" and nxt in ("left", "right", "top"):
             continue  # "on the left": the side word is the relation
+        if kind == "on" and i - len(words) - 1 >= 0 and toks[i - len(words) - 1] in _USE_VERBS:
+            continue  # "to sit on", "work on my computer": a use, not a place
         if kind in ("on", "wall") and nxt in _WALL_WORDS | {"wall"}:
             out.relations.append(Relation("wall"))
             i += 1
@@ -208,7 +213,7 @@ def parse_query(text: str) -> SpatialQuery:
     if target is not None:
         out.target = tuple(cat_at[target].values("cat"))
         out.attrs = attrs_before(target)
-    elif info.generic and info.afford:  # "the seat closest to the tv": what serves as a seat
+    elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves
         out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
     elif info.unknown_target:
         out.unknown_target = True
@@ -231,6 +236,7 @@ class _Scene:
     on: list[frozenset[int]]
     under: list[frozenset[int]]
     is_candidate: np.ndarray
+    label_words: list[frozenset[str]]
 
 
 def _read_scene(prompt: Prompt) -> _Scene:
@@ -244,20 +250,22 @@ def _read_scene(prompt: Prompt) -> _Scene:
                 continue
             if isinstance(data, dict) and isinstance(data.get("id"), int) and "center" in data:
                 by_id.setdefault(data["id"], (data, is_cand))
+    lex = load_lexicon()
     boxes = geo.Boxes.from_views(v for v, _ in by_id.values())
     keep = [by_id[int(i)] for i in boxes.ids]
 
     def ids(value) -> frozenset[int]:
         return frozenset(x for x in value if isinstance(x, int)) if isinstance(value, list) else frozenset()
 
-    records = [candidate_from_line(json.dumps({"id": v["id"], "label": v.get("label"), "tags": v.get("tags")}))
-               for v, _ in keep]
+    records = [candidate_from_line(json.dumps({"id": v["id"], "label": v.get("label"), "tags": v.get("tags"),
+                                               "caption": v.get("caption")})) for v, _ in keep]
     return _Scene(boxes=boxes,
                   concepts=[label_concepts(str(v.get("label") or "")) for v, _ in keep],
                   attrs=[r[1].attrs if r else frozenset() for r in records],
                   rooms=[room_of(str(v["room"])) if v.get("room") else None for v, _ in keep],
                   on=[ids(v.get("on")) for v, _ in keep], under=[ids(v.get("under")) for v, _ in keep],
-                  is_candidate=np.array([c for _, c in keep], bool))
+                  is_candidate=np.array([c for _, c in keep], bool),
+                  label_words=[frozenset(lex.lemma(t) for t in lex.tokens(str(v.get("label") or ""))) for v, _ in keep])
 
 
 def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...]) -> np.ndarray:
@@ -343,8 +351,10 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         lm = marks[0]
         gap = geo.xy_gap(tb, lm) + 0.25 * geo.center_distance(tb, lm)
         gap = np.where(tb.ids[:, None] == lm.ids[None, :], np.inf, gap).min(axis=1)
-        if kind == "near":
-            return np.exp(-gap / geo.NEAR_GAP)
+        if kind == "near":  # a "bed curtain" is by the bed whatever the geometry says
+            named_after = np.array([any(set(c.split()) <= scene.label_words[t] for c in rel.landmarks[0])
+                                    for t in targets], bool)
+            return np.where(named_after, 1.0, np.exp(-gap / geo.NEAR_GAP))
         return _rank_score(-gap if kind == "closest" else gap)
     if kind == "between":
         if len(marks) < 2:
@@ -405,6 +415,10 @@ def rank(prompt: Prompt) -> dict:
         marks = [c for r in sq.relations for c in r.landmarks] + ([sq.facing] if sq.facing else [])
         kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
     targets = np.flatnonzero(kind & scene.is_candidate)
+    named_rooms = {r for r, w in analyse_query(prompt.query).rooms.items() if w >= 1.0}
+    in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
+    if in_room.any():  # "... in the bedroom": that room's instances
+        targets = targets[in_room]
     if not len(targets):
         return empty
     facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
