@@ -69,6 +69,8 @@ def register(app: typer.Typer) -> None:
         else:
             labels = _load_cell_labels(cell_labels, (scene.grid.height, scene.grid.width))
         result = segment_rooms(scene, labels, RoomConfig(split=split))
+        if frames is not None:  # where `iesm eval` finds the ground truth for N-SR
+            result.meta["frames_dir"] = str(frames.resolve())
         size = save_map(result, output)
         rooms = ", ".join(f"{r.label} ({int((result.room_map == r.id).sum() * scene.grid.cell_size ** 2)} m2)"
                           for r in result.rooms)

@@ -16,10 +16,12 @@ from .config import RoomConfig
 
 @dataclass
 class Boundaries:
-    """`raster` (H, W) bool boundary cells; `segments` (N, 4) after filtering and merging;
-    `detector` "lsd" or "hough"; `notes` what had to give way (e.g. the LSD fallback)."""
+    """`raster` (H, W) bool boundary cells (lines dilated and closed); `lines` (H, W) bool the drawn
+    segments alone; `segments` (N, 4) after filtering and merging; `detector` "lsd" or "hough";
+    `notes` what had to give way (e.g. the LSD fallback)."""
 
     raster: np.ndarray
+    lines: np.ndarray
     segments: np.ndarray
     detector: str
     notes: list[str] = field(default_factory=list)
@@ -117,8 +119,9 @@ def boundary_raster(structural: np.ndarray, cell_size: float, config: RoomConfig
     if len(segments):
         lines = [np.round(s).astype(np.int32).reshape(2, 2) for s in segments]
         cv2.polylines(raster, lines, isClosed=False, color=1, thickness=config.line_thickness)
+    lines = raster.astype(bool)
     if config.dilate > 0:
         raster = cv2.dilate(raster, _disk(config.dilate / cell_size))
     if config.close > 0:
         raster = cv2.morphologyEx(raster, cv2.MORPH_CLOSE, _disk(config.close / cell_size))
-    return Boundaries(raster=raster.astype(bool), segments=segments, detector=detector, notes=notes)
+    return Boundaries(raster=raster.astype(bool), lines=lines, segments=segments, detector=detector, notes=notes)

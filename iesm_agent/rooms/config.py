@@ -51,7 +51,7 @@ class RoomConfig(BaseModel):
     merge_gap: float = Field(1.1, ge=0)
     line_thickness: int = Field(2, ge=1)
     dilate: float = Field(0.05, ge=0)
-    close: float = Field(0.25, ge=0)
+    close: float = Field(0.4, ge=0)
     min_room_area: float = Field(1.0, ge=0)
     min_observed: float = Field(0.2, ge=0, le=1)
     split: bool = True

@@ -106,9 +106,11 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     furniture = np.zeros_like(walls) if furniture is None else furniture
     structural = walls | furniture
     boundaries = boundary_raster(structural, cell_size, config)
-    side = 2 * int(round(0.5 / cell_size)) + 1  # close 0.5 m holes in the observed area (square: fast)
-    near_known = cv2.morphologyEx(known.astype(np.uint8), cv2.MORPH_CLOSE,
-                                  cv2.getStructuringElement(cv2.MORPH_RECT, (side, side))).astype(bool)
+    pad = int(round(0.5 / cell_size))  # close 0.5 m holes of the observed area (square kernel: fast),
+    # with unobserved space around the grid so the closing cannot spill over its border
+    padded = cv2.copyMakeBorder(known.astype(np.uint8), pad, pad, pad, pad, cv2.BORDER_CONSTANT, value=0)
+    near_known = cv2.morphologyEx(padded, cv2.MORPH_CLOSE, cv2.getStructuringElement(
+        cv2.MORPH_RECT, (2 * pad + 1, 2 * pad + 1)))[pad:pad + known.shape[0], pad:pad + known.shape[1]].astype(bool)
     free = near_known & ~boundaries.raster & ~structural
     n, comp, stats, _ = cv2.connectedComponentsWithStats(free.astype(np.uint8), connectivity=4)
     comp = comp.astype(np.int32)
@@ -133,28 +135,59 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                 crop[part] = n_rooms
                 n_rooms += 1
                 splits += 1
-    margin = config.dilate / cell_size + config.close / cell_size + config.line_thickness + 2
-    room_map = _fill_margin(room_map, ~structural, margin, furniture)
+    margin = int(np.ceil((config.dilate + config.close) / cell_size)) + config.line_thickness + 2
+    room_map = _grow(room_map, near_known & ~walls & ~boundaries.lines, margin)
+    room_map = _fill_nearest(room_map, furniture | _enclosed(room_map < 0, walls))
     room_labels = _majority_labels(room_map, labels, n_rooms, n_labels)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=splits, boundaries=boundaries,
                             notes=list(boundaries.notes))
 
 
-def _fill_margin(room_map: np.ndarray, allowed: np.ndarray, margin_cells: float, anywhere: np.ndarray) -> np.ndarray:
-    """Give cells without a room the nearest room's id: `allowed` cells within `margin_cells` of a
-    room, and `anywhere` cells at any distance."""
+def _enclosed(unassigned: np.ndarray, walls: np.ndarray) -> np.ndarray:
+    """(H, W) bool: unassigned non-wall cells cut off from the grid border by rooms and walls
+    (unobserved pockets inside the building, e.g. under a bed the mapper missed)."""
+    import cv2
+
+    n, comp = cv2.connectedComponents((unassigned & ~walls).astype(np.uint8), connectivity=4)
+    outside = np.zeros(n, bool)
+    outside[np.concatenate([comp[0], comp[-1], comp[:, 0], comp[:, -1]])] = True
+    outside[0] = True
+    return ~outside[comp]
+
+
+def _grow(room_map: np.ndarray, allowed: np.ndarray, steps: int) -> np.ndarray:
+    """Grow rooms into unassigned `allowed` cells one 4-neighbour step at a time, `steps` times
+    (geodesic: the drawn boundary lines, left out of `allowed`, stop it at closed doors)."""
+    import cv2
+
+    out = room_map.copy()
+    cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))
+    for _ in range(steps):
+        todo = allowed & (out < 0)
+        if not todo.any():
+            break
+        grown = cv2.dilate((out + 1).astype(np.float32), cross)
+        take = todo & (grown > 0)
+        if not take.any():
+            break
+        out[take] = grown[take].astype(np.int32) - 1
+    return out
+
+
+def _fill_nearest(room_map: np.ndarray, cells: np.ndarray) -> np.ndarray:
+    """Give unassigned `cells` the id of the nearest room (Euclidean, any distance)."""
     import cv2
 
     unassigned = room_map < 0
-    if unassigned.all() or not unassigned.any():
+    fill = unassigned & cells
+    if unassigned.all() or not fill.any():
         return room_map
-    distance, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
-                                                        labelType=cv2.DIST_LABEL_PIXEL)
+    _, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
+                                                 labelType=cv2.DIST_LABEL_PIXEL)
     inside = ~unassigned
     lut = np.full(int(nearest.max()) + 1, -1, np.int32)
     lut[nearest[inside]] = room_map[inside]
-    fill = unassigned & ((allowed & (distance <= margin_cells)) | anywhere)
     out = room_map.copy()
     out[fill] = lut[nearest[fill]]
     return out

@@ -48,8 +48,8 @@ def _similar_types(names: list[str]) -> list[np.ndarray]:
 class ViewpointLabels:
     """`CellLabelSource` over a simulator frame directory (needs DIR/gt)."""
 
-    def __init__(self, frames_dir: str | Path, *, seed: int = 0, stride: int = 4, p_content: float = 0.55,
-                 p_confuse: float = 0.25, p_noise: float = 0.15, max_height: float = 2.0):
+    def __init__(self, frames_dir: str | Path, *, seed: int = 0, stride: int = 4, p_content: float = 0.7,
+                 p_confuse: float = 0.2, p_noise: float = 0.1, max_height: float = 2.0):
         self.frames = FrameSet.open(frames_dir)
         self.gt = GroundTruth.load(frames_dir)
         if not self.gt.rooms_list:
@@ -73,7 +73,7 @@ class ViewpointLabels:
         sampled = (v * k.width + u).ravel()
         for frame in self.frames:
             pixels = sampled[frame.depth.ravel()[sampled] > 0]
-            points = world_points(frame.depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose)
+            points = world_points(frame.depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose).T  # (M, 3)
             points = points[points[:, 2] < self.max_height]
             camera_cell = _cells(frame.pose[None, :2, 3], self.gt.grid)[0]
             camera_type = room_type[gt_rooms[camera_cell]] if camera_cell >= 0 else -1
