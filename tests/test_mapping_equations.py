@@ -170,3 +170,11 @@ def test_back_projection_of_a_downward_camera():
     assert cols.min() == int(np.floor(0.4375 / 0.05)) and cols.max() == int(np.floor(0.6625 / 0.05))
     assert rows.min() == int(np.floor((1 - 1.5 * 0.075) / 0.05)) and rows.max() == int(np.floor(1.1125 / 0.05))
     assert c.bbox[0].tolist() == [rows.min(), rows.max(), cols.min(), cols.max()]
+
+
+def test_a_frame_without_masks_adds_nothing():
+    pose = np.eye(4)
+    c = project_candidates(np.ones((4, 5), np.float32), np.zeros((0, 4, 5), bool), 5.0, 5.0, 2.0, 2.0, pose, 0.05)
+    assert len(c) == 0 and c.offsets.tolist() == [0]
+    d = InstanceDictionary(3, CFG)
+    assert d.integrate(c, np.zeros((0, 3)), np.zeros(0), 0).tolist() == [] and len(d) == 0

@@ -28,7 +28,7 @@ class PointwiseMap2D:
 
     def add(self, frame: Frame, seg: Segmentation) -> None:
         k = self.intrinsics
-        mask, keys, _z = mask_points(frame.depth, seg.masks, k.fx, k.fy, k.cx, k.cy, frame.pose,
+        mask, keys, _z, _area = mask_points(frame.depth, seg.masks, k.fx, k.fy, k.cx, k.cy, frame.pose,
                                      self.cfg.cell_size, self.cfg.max_depth)
         if len(keys) == 0:
             return

@@ -66,6 +66,7 @@ def _mean(results: list[dict], path: tuple[str, ...]) -> Optional[float]:
 
 
 COLUMNS = [  # (group, header, path into a method's result, shown for the 2D baseline)
+    ("all", "predicted", ("n_pred",), False), ("all", "matched", ("n_matched",), False),
     ("all", "AUC pred", ("auc_top", "pred"), False), ("all", "AUC gt", ("auc_top", "gt"), False),
     ("all", "AUC match", ("auc_top", "match"), True), ("all", "top-1 match", ("auc_top", "top1_match"), True),
     ("all", "Inst. Diff", ("instance_diff",), False),
@@ -78,6 +79,7 @@ COLUMNS = [  # (group, header, path into a method's result, shown for the 2D bas
     ("stacked", "top-1 match", ("stacked", "top1_match"), True), ("stacked", "top-1 gt", ("stacked", "top1_gt"), True),
     ("stacked", "AUC match", ("stacked", "auc_top_match"), True),
 ]
+INTEGER_COLUMNS = ("predicted", "matched", "Inst. Diff")
 GROUPS = {"all": "Instances (Table 1)", "topdown": "Top-down label map (Table 2)",
           "small": "Small objects (Table 3)", "stacked": "Stacked objects"}
 
@@ -90,15 +92,16 @@ def summarise(per_scene: dict[str, dict]) -> dict:
 
 
 def table_markdown(mean: dict, per_scene: dict[str, dict]) -> str:
-    lines = [f"Mean over {len(per_scene)} simulated scenes ({', '.join(per_scene)}). Higher is better except "
-             "Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
+    gt = np.mean([r["scene"]["gt_instances"] for r in per_scene.values()])
+    lines = [f"Mean over {len(per_scene)} simulated scenes ({', '.join(per_scene)}; {gt:.1f} ground-truth instances "
+             "seen per scene). Higher is better except Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
              "construction (as in the paper's Table 1).", ""]
     for group, title in GROUPS.items():
         cols = [(h, f"{g}.{h}") for g, h, _p, _s in COLUMNS if g == group]
         lines += [f"### {title}", "", "| method | " + " | ".join(h for h, _ in cols) + " |",
                   "|---|" + "---:|" * len(cols)]
         for m in METHODS:
-            cells = [("-" if mean[m][k] is None else (f"{mean[m][k]:.1f}" if "Diff" in h else f"{mean[m][k]:.3f}"))
+            cells = [("-" if mean[m][k] is None else (f"{mean[m][k]:.1f}" if h in INTEGER_COLUMNS else f"{mean[m][k]:.3f}"))
                      for h, k in cols]
             lines.append(f"| {TITLES[m]} | " + " | ".join(cells) + " |")
         lines.append("")
