@@ -1,8 +1,9 @@
 """Floor plans grown room by room on a coarse grid (the constrained-growth idea ProcTHOR uses).
 
-Each room of the program gets a seed cell, grows as a rectangle towards its target area, then
-grows L-shaped into free space; leftover cells go to a neighbouring room, so rooms tile the
-footprint without overlap. Doors join rooms along a spanning tree of the adjacency graph (public
+Each room of the program gets a seed cell and grows as a rectangle towards its target area; each
+leftover free region then joins, whole, the neighbouring room furthest below its target (unless
+that would wrap it around another room), giving L- and T-shaped rooms that tile the footprint
+without overlap and walls without staircases. Doors join rooms along a spanning tree of the adjacency graph (public
 rooms first); an open-plan variant removes the whole wall between one public pair. Coarse cell
 (row, col) covers x in [col * cell, ...), y in [row * cell, ...) metres.
 """
@@ -98,7 +99,7 @@ def _shift(mask: np.ndarray, dr: int, dc: int) -> np.ndarray:
 
 
 def _grow(grid: np.ndarray, targets: dict[int, int], rng: np.random.Generator) -> None:
-    """Grow seeded rooms in place: rectangles first, then L-shapes, then fill every free cell (0)."""
+    """Grow seeded rooms in place: rectangles first, then every free region (0) joins a neighbour."""
     seeds = {i: np.argwhere(grid == i)[0] for i in targets}
     rects = {i: [r, r + 1, c, c + 1] for i, (r, c) in seeds.items()}  # [r0, r1) x [c0, c1)
     area = {i: 1 for i in targets}
@@ -124,38 +125,33 @@ def _grow(grid: np.ndarray, targets: dict[int, int], rng: np.random.Generator) -
                 break
         else:
             active.discard(i)
-    for i in sorted(targets, key=lambda k: area[k] / targets[k]):  # L-shaped growth
-        while area[i] < targets[i]:
-            room, free = grid == i, grid == 0
-            gains = [_shift(room, dr, dc) & free for dr, dc in _STEPS]
-            best = max(range(4), key=lambda d: gains[d].sum())
-            if not gains[best].any():
-                break
-            grid[gains[best]] = i
-            area[i] += int(gains[best].sum())
-    while np.any(grid == 0):  # leftovers: each free cell joins a neighbouring room
+    # leftovers: each connected free region joins, whole, the neighbouring room furthest below
+    # its target, so boundaries stay on rectangle edges (L- and T-shaped rooms, no staircases)
+    import cv2
+
+    n, regions = cv2.connectedComponents((grid == 0).astype(np.uint8), connectivity=4)
+    for region in range(1, n):
+        cells = regions == region
+        around = np.zeros_like(cells)
         for dr, dc in _STEPS:
-            neighbour = _shift(grid, dr, dc)
-            take = (grid == 0) & (neighbour > 0)
-            grid[take] = neighbour[take]
+            around |= _shift(cells, dr, dc)
+        neighbours = np.unique(grid[around & (grid > 0)]).tolist()
+        ranked = sorted(neighbours, key=lambda k: ((area[k] - targets[k]) / targets[k], k))
+        for k in ranked:  # the first that does not wrap around another room (no holes)
+            if not _has_hole((grid == k) | cells):
+                break
+        else:
+            k = ranked[0]
+        grid[cells] = k
+        area[k] += int(cells.sum())
 
 
-def _smooth(grid: np.ndarray, passes: int = 4) -> None:
-    """In place: a cell with three or four 4-neighbours in one other room joins it (never
-    emptying a room below 5 cells), which removes one-cell notches and short wall stubs."""
-    for _ in range(passes):
-        padded = np.pad(grid, 1, constant_values=0)
-        rows, cols = grid.shape
-        around = np.stack([padded[1 + dr:1 + dr + rows, 1 + dc:1 + dc + cols] for dr, dc in _STEPS])
-        votes = (around[:, None] == around[None]).sum(1)  # (4, R, C) how many neighbours agree with each
-        pick = np.argmax((votes >= 3) & (around > 0) & (around != grid), axis=0)
-        target = np.take_along_axis(around, pick[None], 0)[0]
-        change = (votes[pick, np.arange(rows)[:, None], np.arange(cols)] >= 3) & (target > 0) & (target != grid)
-        ids, counts = np.unique(grid, return_counts=True)
-        change &= np.isin(grid, ids[counts > 5])
-        if not change.any():
-            return
-        grid[change] = target[change]
+def _has_hole(mask: np.ndarray) -> bool:
+    """True when the region's complement (outside the grid included) is not one 8-connected piece."""
+    import cv2
+
+    n, _ = cv2.connectedComponents(np.pad(~mask, 1, constant_values=True).astype(np.uint8), connectivity=8)
+    return n - 1 > 1
 
 
 def _runs(codes: np.ndarray) -> list[tuple[int, int, int, int]]:
@@ -272,7 +268,6 @@ def grow_floor_plan(size: str, open_plan: bool, rng: np.random.Generator, attemp
             grid[r, c] = i
             seeds.append((int(r), int(c)))
         _grow(grid, targets, rng)
-        _smooth(grid)
         runs = boundary_runs(grid, CELL)
         open_pair = None
         if open_plan:
