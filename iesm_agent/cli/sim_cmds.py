@@ -46,7 +46,7 @@ def register(app: typer.Typer) -> None:
     def sim_cmd(
         out: Path = typer.Option(..., "--out", help="frame directory to create"),
         seed: int = typer.Option(0, "--seed", help="scene seed (same seed, same scene)"),
-        size: str = typer.Option("small", "--size", help="small (a flat, ~80 instances) | hm3d (~30 m x 30 m)"),
+        size: str = typer.Option("small", "--size", help="small (a flat, ~75 instances) | hm3d (30 m x 30 m, ~330 instances)"),
         open_plan: bool = typer.Option(False, "--open-plan", help="two public rooms share no wall"),
         faults: Optional[Path] = typer.Option(None, "--faults", help="JSON segmenter fault config (FaultConfig)"),
         force: bool = typer.Option(False, "--force", help="replace a non-empty existing DIR"),
