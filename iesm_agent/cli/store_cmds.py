@@ -104,11 +104,16 @@ def register(app: typer.Typer) -> None:
     def render_cmd(
         path: Path = typer.Argument(..., help="a .iesm map, a JSON map or a shipped map name (e.g. apartment)"),
         output: Path = typer.Option(..., "-o", "--output", help="PNG to write"),
+        layer: str = typer.Option("instances", "--layer",
+                                  help="instances (categories, room outlines, stacked cells) or rooms (the room map)"),
     ) -> None:
-        """Draw a top-down PNG: categories, room outlines, stacked cells."""
+        """Draw a top-down PNG of the instance map or of the room map."""
         from ..store import open_map
-        from ..store.render import render_map
+        from ..store.render import render_map, render_rooms
 
+        renderers = {"instances": render_map, "rooms": render_rooms}
+        if layer not in renderers:
+            raise IesmError(f"unknown layer {layer!r}; choose instances or rooms", None, "--layer")
         _check_output(output)
-        render_map(open_map(path), output)
+        renderers[layer](open_map(path), output)
         typer.echo(f"wrote {output}")

@@ -26,19 +26,92 @@ def _top_instance_per_cell(scene: SceneMap) -> tuple[np.ndarray, np.ndarray]:
     return cells[order][first], ids[order][first]
 
 
-def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
-    """Write the top-down render of `scene` to `path` (PNG, written atomically)."""
+def _pyplot():
     try:
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        from matplotlib.patches import Patch
     except ImportError as exc:
         raise IesmError("rendering needs matplotlib: pip install 'iesm-agent[plots]'", None, "render") from exc
-    grid = scene.grid
-    if grid.height == 0 or grid.width == 0:
+    return plt
+
+
+def _check_grid(scene: SceneMap) -> None:
+    if scene.grid.height == 0 or scene.grid.width == 0:
         raise IesmError("the map has an empty grid (imported without a PLY?): nothing to render", scene.scene_id)
+
+
+def _extent(scene: SceneMap) -> tuple[float, float, float, float]:
+    """(x0, x1, y0, y1) of the grid in metres, for imshow(origin="lower")."""
+    g = scene.grid
+    return (g.origin[0], g.origin[0] + g.width * g.cell_size, g.origin[1], g.origin[1] + g.height * g.cell_size)
+
+
+def _save(fig, path: str | Path, dpi: int) -> None:
+    """Write `fig` to `path` as PNG atomically and close it."""
+    plt = _pyplot()
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    finally:
+        plt.close(fig)
+
+
+def render_rooms(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
+    """Write the room map of `scene` to `path` (PNG): each room's cells in its own colour with its
+    label and id, obstacles dark grey, cells outside every room white."""
+    plt = _pyplot()
+    from matplotlib.patches import Patch
+
+    _check_grid(scene)
+    if scene.room_map is None or not scene.rooms:
+        raise IesmError("the map has no rooms: run `iesm rooms` (or import rooms) first", scene.scene_id)
+    grid = scene.grid
+    cmap = plt.get_cmap("tab20", 20)
+    image = np.ones((grid.height, grid.width, 4))
+    if scene.obstacles is not None:
+        image[scene.obstacles] = (0.3, 0.3, 0.3, 1.0)
+    handles = []
+    xs = grid.origin[0] + (np.arange(grid.width) + 0.5) * grid.cell_size
+    ys = grid.origin[1] + (np.arange(grid.height) + 0.5) * grid.cell_size
+    centres = []
+    for k, room in enumerate(scene.rooms):
+        mask = scene.room_map == room.id
+        if not mask.any():
+            continue
+        colour = cmap(k % 20)
+        image[mask & ~(scene.obstacles if scene.obstacles is not None else False)] = colour
+        handles.append(Patch(facecolor=colour, label=f"{room.id}: {room.label}"))
+        r, c = np.argwhere(mask).mean(0)
+        centres.append((xs[int(round(c))], ys[int(round(r))], room.label))
+    fig, ax = plt.subplots(figsize=(10, max(4.0, 8 * grid.height / grid.width)))
+    ax.imshow(image, origin="lower", extent=_extent(scene), interpolation="nearest")
+    for x, y, label in centres:
+        ax.text(x, y, label, ha="center", va="center", fontsize=8,
+                bbox={"facecolor": "white", "alpha": 0.7, "edgecolor": "none", "pad": 1})
+    if scene.obstacles is not None:
+        handles.append(Patch(facecolor=(0.3, 0.3, 0.3), label="obstacle"))
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(f"{scene.scene_id}: {len(scene.rooms)} rooms")
+    _save(fig, path, dpi)
+
+
+def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
+    """Write the top-down render of `scene` to `path` (PNG, written atomically)."""
+    plt = _pyplot()
+    from matplotlib.patches import Patch
+
+    _check_grid(scene)
+    grid = scene.grid
     cells, top_ids = _top_instance_per_cell(scene)
     label_of = {inst.id: inst.label for inst in scene.instances}
     cell_labels = np.array([label_of[i] for i in top_ids.tolist()], dtype=object)
@@ -52,8 +125,7 @@ def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     if len(cells):
         image[cells] = np.array([colours.get(lab, other) for lab in cell_labels])
     image = image.reshape(grid.height, grid.width, 4)
-    extent = (grid.origin[0], grid.origin[0] + grid.width * grid.cell_size,
-              grid.origin[1], grid.origin[1] + grid.height * grid.cell_size)
+    extent = _extent(scene)
     aspect = grid.height / grid.width
     fig, ax = plt.subplots(figsize=(10, max(4.0, 10 * aspect * 0.8)))
     ax.imshow(image, origin="lower", extent=extent, interpolation="nearest")
@@ -84,14 +156,45 @@ def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     ax.set_ylabel("y (m)")
     ax.set_title(f"{scene.scene_id}: {len(scene.instances)} instances, "
                  f"{scene.occupancy.multi_occupancy_cells} stacked cells")
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    finally:
-        plt.close(fig)
+    _save(fig, path, dpi)
+
+
+def render_rooms(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
+    """Write the room map of `scene` to `path` (PNG): each room's cells in its own colour with its
+    label and id, obstacles dark grey, cells outside every room white."""
+    plt = _pyplot()
+    from matplotlib.patches import Patch
+
+    _check_grid(scene)
+    if scene.room_map is None or not scene.rooms:
+        raise IesmError("the map has no rooms: run `iesm rooms` (or import rooms) first", scene.scene_id)
+    grid = scene.grid
+    cmap = plt.get_cmap("tab20", 20)
+    image = np.ones((grid.height, grid.width, 4))
+    if scene.obstacles is not None:
+        image[scene.obstacles] = (0.3, 0.3, 0.3, 1.0)
+    handles = []
+    xs = grid.origin[0] + (np.arange(grid.width) + 0.5) * grid.cell_size
+    ys = grid.origin[1] + (np.arange(grid.height) + 0.5) * grid.cell_size
+    centres = []
+    for k, room in enumerate(scene.rooms):
+        mask = scene.room_map == room.id
+        if not mask.any():
+            continue
+        colour = cmap(k % 20)
+        image[mask & ~(scene.obstacles if scene.obstacles is not None else False)] = colour
+        handles.append(Patch(facecolor=colour, label=f"{room.id}: {room.label}"))
+        r, c = np.argwhere(mask).mean(0)
+        centres.append((xs[int(round(c))], ys[int(round(r))], room.label))
+    fig, ax = plt.subplots(figsize=(10, max(4.0, 8 * grid.height / grid.width)))
+    ax.imshow(image, origin="lower", extent=_extent(scene), interpolation="nearest")
+    for x, y, label in centres:
+        ax.text(x, y, label, ha="center", va="center", fontsize=8,
+                bbox={"facecolor": "white", "alpha": 0.7, "edgecolor": "none", "pad": 1})
+    if scene.obstacles is not None:
+        handles.append(Patch(facecolor=(0.3, 0.3, 0.3), label="obstacle"))
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(f"{scene.scene_id}: {len(scene.rooms)} rooms")
+    _save(fig, path, dpi)
