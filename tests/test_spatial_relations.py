@@ -128,3 +128,9 @@ def test_gate_weighs_the_spatial_expert_only_for_relations(room):
 def test_without_the_spatial_expert_the_relation_is_lost(room):
     r = Retriever(room, provider=OfflineModel(use_embeddings=False), method="experts:abs,desc,obj,room")
     assert r.ask("the chair closest to the desk").instance_id != 12
+
+
+def test_a_relation_whose_landmark_cannot_be_read_gives_no_ranking(room):
+    # "over there" names nothing; "farthest from" with nothing after it has no landmark either
+    assert spatial(room, "the chair farthest from") == []
+    assert spatial(room, "the lamp over there") == []

@@ -16,8 +16,10 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ..lexicon import load_lexicon
 from ..store import geometry as geo
 from ..store.mapstore import MapStore
+from ..understanding import label_concepts
 
 #: a superlative needs the runner-up this much worse (metres for distances, ratio for sizes)
 DISTANCE_MARGIN = 0.3
@@ -53,7 +55,13 @@ class _Geometry:
         self.row = {int(i): r for r, i in enumerate(self.boxes.ids)}
 
     def of(self, category: str) -> np.ndarray:
-        return np.flatnonzero(self.cats == category)
+        """Rows a person naming `category` could mean: that spoken category, or a label denoting it
+        or a kind of it ("chair" also covers an "armchair")."""
+        lex = load_lexicon()
+        wanted = [c for c, w in label_concepts(category) if w >= 1.0]
+        kinds = {label: any(lex.concept_sim(q, c) >= 0.9 for q in wanted for c, w in label_concepts(label) if w >= 1.0)
+                 for label in set(self.cats.tolist())}
+        return np.flatnonzero((self.cats == category) | np.array([kinds[c] for c in self.cats], bool))
 
     def stacked(self, rows: np.ndarray, field: str) -> np.ndarray:
         """(len(rows), N) bool: row's `on` / `under` geometry field lists instance j."""

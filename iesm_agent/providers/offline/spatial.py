@@ -96,7 +96,7 @@ def parse_query(text: str) -> SpatialQuery:
     toks = [t for t in lex.tokens(text) if t not in lex.words["skip"] or t in ("one",)]
     lemmas = [lex.lemma(t) for t in toks]
     spans = lex.scan(lemmas)
-    cat_at = {s.start: s for s in spans if s.has("cat") and not s.has("room")}
+    cat_at = {s.start: s for s in spans if s.has("cat")}  # "toilet" is a category and a room word
     attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
     out = SpatialQuery()
     used: set[int] = set()  # starts of cat spans taken as landmarks
@@ -331,6 +331,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
+    if not marks and kind in ("on", "under", "above", "below", "with", "near", "closest", "farthest", "between"):
+        return None  # the query's landmark could not be read: no guess
     if kind in ("on", "under", "above", "below", "with"):
         lm = marks[0]
         if kind == "on":
