@@ -176,3 +176,23 @@ def test_translate_drops_unmatched_targets():
     kept, dropped = translate(qs, {2: 11, 3: 12}, "built.iesm")
     assert dropped == 1 and len(kept) == 1
     assert (kept[0].target, kept[0].accept, kept[0].map) == (11, [11], "built.iesm")
+
+
+def test_a_segmenter_replaces_missing_seg_files(tiny, tmp_path):
+    from iesm_agent.frames import FrameSet
+    from iesm_agent.mapping.build import build_map
+    from iesm_agent.sim import FaultConfig, SyntheticSegmenter
+
+    d = _copy(tiny, tmp_path / "noseg")
+    for seg in (d / "frames").glob("*.seg.npz"):
+        seg.unlink()
+    frames = FrameSet.open(d)
+    no_faults = FaultConfig(min_area_px=20, miss_rate=0, split_rate=0, merge_rate=0, erode_rate=0,
+                            embedding_noise=0, confusion_rate=0)
+    segmenter = SyntheticSegmenter({b[0]: b[1] for b in BOXES}, no_faults, space=frames.meta.embedding_space)
+    scene = build_map(frames, segmenter=segmenter)
+    assert sorted(i.label for i in scene.instances) == ["chair", "cup", "table"]
+    from iesm_agent.errors import IesmError
+
+    with pytest.raises(IesmError, match="seg.npz"):
+        build_map(frames)

@@ -29,8 +29,8 @@ from ..store.model import GridSpec, InstanceGrid, SceneMap
 from .categorize import category_ranking, category_scores
 from .cells import intersections
 from .matching import greedy_pairs, iou_pairs, keys_in_grid, masks_in_grid
-from .project import pixel_cells
 from .metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, small_categories, topmost_labels
+from .project import pixel_cells
 
 STACKED_SHARE = 0.5  # share of an instance's footprint another instance must cover to count as stacked
 #: optional sections other stages contribute: "module:function(scene, gt, frames_dir) -> dict"
