@@ -86,8 +86,8 @@ def test_segment_rooms_writes_rooms_polygons_instance_rooms_and_obstacles():
         assert 3.0 < xs.max() - xs.min() <= 4.1 and 3.0 < ys.max() - ys.min() <= 4.1
     bed = next(i for i in scene.instances if i.label == "bed")
     assert bed.room_label == "bedroom" and scene.rooms[bed.room_id].label == "bedroom"
-    assert all(i.room_id is None for i in scene.instances if i.label == "wall")
-    assert scene.obstacles[scene.room_map < 0].mean() > 0.9       # the walls block
+    assert scene.obstacles[layout.rooms < 0].mean() > 0.9 and not scene.obstacles[layout.rooms >= 0].all()
+    assert (scene.room_map[layout.rooms >= 0] >= 0).mean() > 0.97    # the floor is covered (corners aside)
     assert "lsd" in scene.meta["room_segmentation"]
 
 
@@ -102,3 +102,14 @@ def test_no_observed_cells_means_no_rooms():
     empty = CellLabels(np.full(layout.rooms.shape, -1, np.int32), ["kitchen"])
     seg = segment_scene(layout.scene.model_copy(update={"instances": layout.scene.instances}), empty)
     assert seg.labels == [] and (seg.room_map == -1).all()
+
+
+def test_thick_mapped_walls_are_shared_by_the_rooms_they_separate():
+    layout = grid_layout(2, 1, wall=0.3, labels=("bedroom", "kitchen"))   # interior wall: columns 80-85
+    seg = segment_scene(layout.scene, noisy_labels(layout, 1.0))
+    wall = seg.room_map[10:30, 80:86]
+    left, right = seg.room_map[20, 40], seg.room_map[20, 120]
+    assert set(np.unique(wall).tolist()) <= {left, right, -1} and (wall == left).any() and (wall == right).any()
+    assert (wall[:, 0] == left).all() and (wall[:, -1] == right).all()
+    unshared = segment_scene(layout.scene, noisy_labels(layout, 1.0), RoomConfig(wall_share=0))
+    assert (unshared.room_map[10:30, 80:86] == -1).all()

@@ -32,6 +32,10 @@ class RoomConfig(BaseModel):
     at most `merge_gap` apart are merged (this closes door gaps); the raster is drawn
     `line_thickness` cells wide, dilated by `dilate` and closed by `close`. Free components smaller
     than `min_room_area` m^2, or with less than `min_observed` of their cells observed, are not rooms.
+    Rooms then grow over the raster margin (stopped by the drawn lines, so closed doors hold), into
+    unobserved space inside the building and over large fixed furniture; wall cells within
+    `wall_share` m of a room go to the nearest one (walls are split between the rooms they separate;
+    a mapped wall is usually thicker than the real one).
     The contextual split cuts a component of at least `split_min_area` m^2 along the axis-aligned line
     that best separates its two main per-cell labels, when that line classifies at least
     `split_purity` of their cells and beats the unsplit majority by `split_gain`; the runner-up label
@@ -53,12 +57,13 @@ class RoomConfig(BaseModel):
     dilate: float = Field(0.05, ge=0)
     close: float = Field(0.4, ge=0)
     min_room_area: float = Field(1.0, ge=0)
+    wall_share: float = Field(0.15, ge=0)
     min_observed: float = Field(0.2, ge=0, le=1)
     split: bool = True
     split_min_area: float = Field(8.0, ge=0)
     split_purity: float = Field(0.8, ge=0, le=1)
     split_gain: float = Field(0.1, ge=0, le=1)
-    split_min_share: float = Field(0.2, ge=0, le=0.5)
+    split_min_share: float = Field(0.1, ge=0, le=0.5)
     split_max_depth: int = Field(3, ge=0)
     object_vote_weight: float = Field(0.5, ge=0)
     obstacles: ObstacleConfig = Field(default_factory=ObstacleConfig)

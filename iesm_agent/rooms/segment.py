@@ -62,12 +62,12 @@ def _split_component(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.
                      cell_area: float, config: RoomConfig, depth: int) -> list[np.ndarray]:
     """Recursively split `mask` (h, w) by the per-cell `labels` (h, w) and the optional object
     evidence `objects` (L, h, w); returns disjoint masks."""
-    if depth >= config.split_max_depth or mask.sum() * cell_area < config.split_min_area:
+    if depth >= config.split_max_depth or np.count_nonzero(mask) * cell_area < config.split_min_area:
         return [mask]
     inside = mask & (labels >= 0)
     totals = np.bincount(labels[inside], minlength=n_labels).astype(np.float64)
     if objects is not None:
-        totals += config.object_vote_weight * objects[:, mask].sum(axis=1)
+        totals += config.object_vote_weight * np.tensordot(objects, mask.astype(np.float32), axes=([1, 2], [0, 1]))
     if np.count_nonzero(totals) < 2:
         return [mask]
     b, a = np.argsort(totals, kind="stable")[-2:]
@@ -136,23 +136,26 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                 n_rooms += 1
                 splits += 1
     margin = int(np.ceil((config.dilate + config.close) / cell_size)) + config.line_thickness + 2
-    room_map = _grow(room_map, near_known & ~walls & ~boundaries.lines, margin)
-    room_map = _fill_nearest(room_map, furniture | _enclosed(room_map < 0, walls))
+    open_cells = ~walls & ~boundaries.lines
+    room_map = _grow(room_map, near_known & open_cells, margin)
+    building = _enclosed(walls | boundaries.raster)
+    room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
+    room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
     room_labels = _majority_labels(room_map, labels, n_rooms, n_labels)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=splits, boundaries=boundaries,
                             notes=list(boundaries.notes))
 
 
-def _enclosed(unassigned: np.ndarray, walls: np.ndarray) -> np.ndarray:
-    """(H, W) bool: unassigned non-wall cells cut off from the grid border by rooms and walls
-    (unobserved pockets inside the building, e.g. under a bed the mapper missed)."""
+def _enclosed(barrier: np.ndarray) -> np.ndarray:
+    """(H, W) bool: cells not reachable from the grid border without crossing `barrier` (the
+    building, its walls included, when the barrier seals it)."""
     import cv2
 
-    n, comp = cv2.connectedComponents((unassigned & ~walls).astype(np.uint8), connectivity=4)
+    n, comp = cv2.connectedComponents((~barrier).astype(np.uint8), connectivity=4)
     outside = np.zeros(n, bool)
     outside[np.concatenate([comp[0], comp[-1], comp[:, 0], comp[:, -1]])] = True
-    outside[0] = True
+    outside[0] = False  # barrier cells
     return ~outside[comp]
 
 
@@ -175,16 +178,17 @@ def _grow(room_map: np.ndarray, allowed: np.ndarray, steps: int) -> np.ndarray:
     return out
 
 
-def _fill_nearest(room_map: np.ndarray, cells: np.ndarray) -> np.ndarray:
-    """Give unassigned `cells` the id of the nearest room (Euclidean, any distance)."""
+def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, max_cells: float) -> np.ndarray:
+    """Give unassigned cells the id of the nearest room (Euclidean): `anywhere` cells at any
+    distance, `near` cells within `max_cells`."""
     import cv2
 
     unassigned = room_map < 0
-    fill = unassigned & cells
-    if unassigned.all() or not fill.any():
+    if unassigned.all() or not unassigned.any():
         return room_map
-    _, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
-                                                 labelType=cv2.DIST_LABEL_PIXEL)
+    distance, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
+                                                        labelType=cv2.DIST_LABEL_PIXEL)
+    fill = unassigned & (anywhere | (near & (distance <= max_cells)))
     inside = ~unassigned
     lut = np.full(int(nearest.max()) + 1, -1, np.int32)
     lut[nearest[inside]] = room_map[inside]
