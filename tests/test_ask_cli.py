@@ -32,7 +32,7 @@ def test_ask_json_on_the_shipped_map(apartment_store, env):
     assert set(data["gate"]) == {"obj", "room", "desc", "abs", "spatial"} and data["gate"]["spatial"] == 0
     assert abs(sum(data["gate"].values()) - 1) < 1e-9
     assert str(target) in data["scores"] and data["ranking"][0] == target
-    assert data["failures"] == [] and len(data["calls"]) == 5
+    assert data["failures"] == [] and len(data["calls"]) == 6  # gate, four experts, spatial
 
 
 def test_ask_human_output_with_explain_and_options(apartment_path, env):

@@ -1,0 +1,204 @@
+"""Reading a referring expression for the spatial expert: the target kind, its colour, material
+and size words, the relations (on, under, above, below, next to, closest, farthest, between, corner,
+middle, wall, left/right/front/behind, extremes, ordinals) with their landmark categories, and the
+viewpoint ("facing the bed"). Lexicon-driven, from the shared query understanding."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ...lexicon import load_lexicon
+from ...understanding import analyse_query
+
+_CUES: dict[tuple[str, ...], str] = {
+    ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
+    ("resting", "on"): "on", ("under",): "under", ("underneath",): "under", ("beneath",): "under",
+    ("below",): "below", ("above",): "above", ("over",): "above", ("next", "to"): "near",
+    ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
+    ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
+    ("closer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
+    ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
+    ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
+    ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
+    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing",
+    ("looking", "at"): "facing", ("from",): "from", ("with",): "with",
+}
+_EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
+             "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
+             "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
+             "higher": "high", "lowest": "low", "lower": "low", "widest": "wide", "wider": "wide",
+             "longest": "wide", "longer": "wide"}
+_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
+             "fifth": 5, "5th": 5, "last": -1}
+#: relations that need a landmark after the cue (the others are read before this set is used)
+_LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
+_WALL_WORDS = {"wall", "walls"}
+#: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
+_LANDMARK_ATTRS = ("color", "material", "size")
+SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
+#: "on" after these verbs states a use, not a place ("where can I work on my computer")
+_USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
+              "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
+_INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
+
+
+@dataclass
+class Relation:
+    """One relation: `kind` (a `_CUES` value, "extreme" or "ordinal"), landmark categories
+    (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
+    high/low/wide; ordinal: side or "landmark"), `order` (1-based, -1 = last)."""
+
+    kind: str
+    landmarks: list[tuple[str, ...]] = field(default_factory=list)
+    landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
+    value: str = ""
+    order: int = 0
+    landmark_where: str = ""  # "corner" / "middle" / "wall": which of the landmark's instances
+
+
+@dataclass
+class SpatialQuery:
+    """A referring expression: target categories (empty = unnamed), its colour/material words,
+    the relations and the viewpoint landmark ("facing the bed")."""
+
+    target: tuple[str, ...] = ()
+    attrs: tuple[tuple[str, str], ...] = ()
+    relations: list[Relation] = field(default_factory=list)
+    facing: tuple[str, ...] = ()
+    unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
+
+    @property
+    def words(self) -> str:
+        return " ".join(r.kind if r.kind not in ("extreme", "ordinal") else r.value or r.kind for r in self.relations)
+
+
+# -- reading the query -----------------------------------------------------------------------
+def parse_query(text: str) -> SpatialQuery:
+    """The spatial reading of `text` (no relations when it states none)."""
+    lex = load_lexicon()
+    toks = [t for t in lex.tokens(text) if t not in lex.words["skip"] or t in ("one",)]
+    lemmas = [lex.lemma(t) for t in toks]
+    spans = lex.scan(lemmas)
+    cat_at = {s.start: s for s in spans if s.has("cat")}  # "toilet" is a category and a room word
+    attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+    out = SpatialQuery()
+    used: set[int] = set()  # starts of cat spans taken as landmarks
+
+    def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
+        found, end = [], start
+        while end in attr_at:
+            s = attr_at[end]
+            found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
+            end = s.start
+        return tuple(found)
+
+    def next_cat(pos: int) -> int | None:
+        return next((j for j in range(pos, len(lemmas)) if j in cat_at and j not in used), None)
+
+    last_landmark_end = [-1]
+
+    def landmark(rel: Relation, pos: int) -> bool:
+        j = next_cat(pos)
+        if j is None:
+            return False
+        used.add(j)
+        last_landmark_end[0] = cat_at[j].end
+        rel.landmarks.append(tuple(c for c in cat_at[j].values("cat")))
+        rel.landmark_attrs.append(attrs_before(j))
+        return True
+
+    i = 0
+    pending_ordinal: Relation | None = None
+    while i < len(lemmas):
+        if i in cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
+            i = cat_at[i].end
+            continue
+        word = toks[i]
+        if word in _EXTREMES:
+            out.relations.append(Relation("extreme", value=_EXTREMES[word]))
+            i += 1
+            continue
+        if word in _ORDINALS:
+            pending_ordinal = Relation("ordinal", order=_ORDINALS[word], value="left")
+            out.relations.append(pending_ordinal)
+            i += 1
+            continue
+        cue = next(((c, k) for c, k in sorted(_CUES.items(), key=lambda kv: -len(kv[0]))
+                    if tuple(toks[i:i + len(c)]) == c), None)
+        if cue is None:
+            i += 1
+            continue
+        words, kind = cue
+        nxt = toks[i + len(words)] if i + len(words) < len(toks) else ""
+        i += len(words)
+        if kind == "on" and nxt in ("left", "right", "top"):
+            continue  # "on the left": the side word is the relation
+        if kind == "on" and i - len(words) >= 1 and toks[i - len(words) - 1] in _USE_VERBS:
+            continue  # "to sit on", "work on my computer": a use, not a place
+        if kind in ("on", "wall") and nxt in _WALL_WORDS:
+            out.relations.append(Relation("wall"))
+            i += 1
+            continue
+        if kind == "from" and pending_ordinal is not None:
+            if nxt in ("left", "right"):
+                pending_ordinal.value = nxt
+                i += 1
+            elif landmark(pending_ordinal, i):
+                pending_ordinal.value = "landmark"
+            continue
+        if kind == "from":
+            continue
+        if kind == "facing":
+            j = next_cat(i)
+            if j is not None:
+                used.add(j)
+                out.facing = tuple(cat_at[j].values("cat"))
+            continue
+        if kind in ("corner", "middle") and nxt == "of":
+            rel = Relation(kind)
+            landmark(rel, i)  # "the middle of the bed": relative to that object
+            out.relations.append(rel)
+            continue
+        if kind == "right" and nxt in _INTENSIFIED:
+            continue  # "right below the sink": an intensifier, not a side
+        before = i - len(words) - 1  # the word before the cue
+        if kind in ("corner", "middle", "wall") and before >= 0 and last_landmark_end[0] == before \
+                and toks[before] in ("in", "at", "by"):
+            out.relations[-1].landmark_where = kind  # "near the plant in the corner": the plant's place
+            continue
+        if kind in ("left", "right", "front", "behind"):
+            rel = Relation(kind)
+            if nxt == "of":
+                landmark(rel, i)
+            elif kind == "front" and toks[i - 2:i - 1] == ["in"]:
+                landmark(rel, i)
+            out.relations.append(rel)
+            continue
+        if kind in ("closest", "farthest"):
+            rel = Relation(kind)
+            anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
+            if anchor is None or not landmark(rel, anchor):
+                landmark(rel, i)
+            out.relations.append(rel)
+            continue
+        rel = Relation(kind)
+        if kind in _LANDMARK_KINDS:
+            if not landmark(rel, i):
+                continue  # "the one on top", "over there": nothing to relate to
+            if kind == "between":
+                landmark(rel, i)
+        out.relations.append(rel)
+    target = next((j for j in sorted(cat_at) if j not in used), None)
+    info = analyse_query(text)
+    if target is not None:
+        out.target = tuple(cat_at[target].values("cat"))
+        out.attrs = attrs_before(target)
+    elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves
+        out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
+    elif info.unknown_target:
+        out.unknown_target = True
+    # a size word on the target ("the small lamp on the side table") ranks within the relation
+    out.relations += [Relation("extreme", value=SIZE_EXTREMES[v]) for k, v in out.attrs
+                      if k == "size" and v in SIZE_EXTREMES and out.relations
+                      and not any(r.kind == "extreme" for r in out.relations)]
+    return out
