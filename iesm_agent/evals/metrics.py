@@ -57,6 +57,15 @@ def _overall(records: Sequence[ResultRecord]) -> dict:
     }
 
 
+def _type_row(records: Sequence[ResultRecord]) -> dict:
+    """n, O-SR and MRR of one query type, and N-SR when its trials could be judged."""
+    row = {"n": len(records), "osr": osr(records), "mrr": mrr(r.rank for r in records)}
+    rate = nsr(records)
+    if rate is not None:
+        row["nsr"] = rate
+    return row
+
+
 def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> dict:
     """`{"methods": {variant: {"overall": {...}, "by_type": {type: {"n", "osr"}}}}}`, variants
     in the order given (then any others in order of appearance)."""
@@ -74,8 +83,7 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
         overall["osr_type_mean"] = statistics.fmean(typed) if typed else None
         methods[variant] = {
             "overall": overall,
-            "by_type": {t: {"n": len(by_type[t]), "osr": osr(by_type[t]),
-                            "mrr": mrr(r.rank for r in by_type[t]), "nsr": nsr(by_type[t])} for t in order},
+            "by_type": {t: _type_row(by_type[t]) for t in order},
         }
     return {"methods": methods}
 

@@ -103,11 +103,14 @@ def gt_room_labels(gt) -> dict[int, str]:
 
 def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:
     """`iesm eval-map` section: {"rooms": metrics of the map's rooms (segmented now with the
-    simulated per-cell labels when the map has none), "rooms_baseline": the per-cell labels alone}."""
+    simulated per-cell labels when the map has none), "rooms_baseline": the per-cell labels alone};
+    {} when the ground truth lists no rooms."""
     from .labels import CellLabels
     from .scene import segment_rooms
     from .sim_labels import ViewpointLabels
 
+    if not gt.rooms_list:
+        return {}
     cell_labels = ViewpointLabels(frames_dir).cell_labels(scene.grid)
     rooms_scene = scene if scene.room_map is not None else segment_rooms(scene, cell_labels)
     labels = gt_room_labels(gt)
