@@ -134,3 +134,12 @@ def test_a_relation_whose_landmark_cannot_be_read_gives_no_ranking(room):
     # "over there" names nothing; "farthest from" with nothing after it has no landmark either
     assert spatial(room, "the chair farthest from") == []
     assert spatial(room, "the lamp over there") == []
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the box that is not under the desk", 8),
+    ("the chair across the bed from the desk", 10),
+    ("the plant that isn't in the corner", 16),
+])
+def test_negation_and_opposite(room, query, best):
+    assert spatial(room, query)[0] == best

@@ -136,7 +136,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
-    if not marks and kind in ("on", "under", "above", "below", "with", "near", "closest", "farthest", "between"):
+    if not marks and kind in ("on", "under", "above", "below", "with", "near", "closest", "farthest", "between",
+                              "opposite"):
         return None  # the query's landmark could not be read: no guess
     if kind in ("on", "under", "above", "below", "with"):
         lm = marks[0]
@@ -176,6 +177,15 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             return _rank_score(-np.hypot(*(c - (lo + hi) / 2).T))
         edge = np.minimum(tb.lo[:, :2] - lo, hi - tb.hi[:, :2])  # (T, 2) distance to the x / y walls
         return _rank_score(-(edge.max(axis=1) if kind == "corner" else edge.min(axis=1)))
+    if kind == "opposite":
+        if len(marks) == 2:  # across M from R: near R reflected through M
+            goal = 2 * marks[0].center[:, None, :2] - marks[1].center[None, :, :2]
+            goal = goal.reshape(-1, 2)
+        else:  # opposite M: across M from the middle of the room
+            lo, hi = _extent(scene, targets)
+            goal = 2 * marks[0].center[:, :2] - (lo + hi) / 2
+        dist = np.hypot(*(tb.center[:, None, :2] - goal[None]).transpose(2, 0, 1)).min(axis=1)
+        return _rank_score(-dist)
     if kind == "extreme":
         size = tb.size
         value = {"large": size.prod(axis=1), "small": -size.prod(axis=1), "tall": size[:, 2],
@@ -234,7 +244,7 @@ def rank(prompt: Prompt) -> dict:
         scores = _relation_scores(rel, scene, targets, facing)
         if scores is None:
             return empty  # a landmark the map lacks: no guess
-        total += scores
+        total += 1.0 - scores if rel.negated else scores
     order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
     return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
 

@@ -21,7 +21,8 @@ _CUES: dict[tuple[str, ...], str] = {
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
     ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
     ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing",
-    ("looking", "at"): "facing", ("from",): "from", ("with",): "with",
+    ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
+    ("across", "from"): "opposite", ("across",): "opposite",
 }
 _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
              "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
@@ -30,6 +31,8 @@ _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger"
              "longest": "wide", "longer": "wide"}
 _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
              "fifth": 5, "5th": 5, "last": -1}
+#: words that negate the relation that follows ("not on the table", "isn't in the corner")
+_NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
@@ -54,6 +57,7 @@ class Relation:
     value: str = ""
     order: int = 0
     landmark_where: str = ""  # "corner" / "middle" / "wall": which of the landmark's instances
+    negated: bool = False     # "the cup that is not on the table"
 
 
 @dataclass
@@ -109,7 +113,12 @@ def parse_query(text: str) -> SpatialQuery:
 
     i = 0
     pending_ordinal: Relation | None = None
+    negated: set[int] = set()  # indices of relations that follow a negation word
     while i < len(lemmas):
+        if toks[i] in _NEGATIONS:
+            negated.add(len(out.relations))
+            i += 1
+            continue
         if i in cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
             i = cat_at[i].end
             continue
@@ -174,6 +183,14 @@ def parse_query(text: str) -> SpatialQuery:
                 landmark(rel, i)
             out.relations.append(rel)
             continue
+        if kind == "opposite":  # "across the table from the red chair": two landmarks, else one
+            rel = Relation(kind)
+            if landmark(rel, i):
+                frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
+                if frm is not None and landmark(rel, frm):
+                    i = last_landmark_end[0]
+            out.relations.append(rel)
+            continue
         if kind in ("closest", "farthest"):
             rel = Relation(kind)
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
@@ -188,6 +205,9 @@ def parse_query(text: str) -> SpatialQuery:
             if kind == "between":
                 landmark(rel, i)
         out.relations.append(rel)
+    for k in negated:
+        if k < len(out.relations):
+            out.relations[k].negated = True
     target = next((j for j in sorted(cat_at) if j not in used), None)
     info = analyse_query(text)
     if target is not None:
