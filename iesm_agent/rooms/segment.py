@@ -1,10 +1,11 @@
 """Room segmentation (paper Sec. 3.2) with a contextual split for open-plan space.
 
-Free space = cells that are not boundary (LSD raster of the structural mask, or the structural
-mask itself) near observed space; its 4-connected components large and observed enough are room
-instances; an oversized component whose per-cell labels (plus room-typical objects) form two
-spatially separate clusters is cut along the axis-aligned line that separates them best; each room
-takes the majority per-cell label; the dilation margin is given back to the nearest room.
+Free space = cells near observed space that are neither structural nor boundary (the LSD raster);
+its 4-connected components, large and observed enough, are room instances; an oversized component
+whose per-cell labels (plus room-typical objects) form two spatially separate clusters is cut along
+the axis-aligned line that separates them best; rooms then grow geodesically over the boundary
+margin and the rest of the sealed building (the drawn lines stop them), take large furniture, and
+share the walls between them; each room takes the majority per-cell label.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from typing import Optional
 
 import numpy as np
 
-from .boundaries import Boundaries, _disk, boundary_raster
+from .boundaries import Boundaries, boundary_raster
 from .config import RoomConfig
 from .labels import CellLabels
 
