@@ -38,11 +38,11 @@ def look_pose(position, yaw: float, pitch_deg: float = PITCH_DEG) -> np.ndarray:
     return pose
 
 
-def _free_space(taken: np.ndarray, rooms: np.ndarray, cell: float) -> np.ndarray:
-    """(H, W) float32 distance in metres from each room cell to the nearest taken / wall cell."""
+def _free_space(blocked: np.ndarray, rooms: np.ndarray, cell: float) -> np.ndarray:
+    """(H, W) float32 distance in metres from each room cell to the nearest blocked or wall cell."""
     import cv2
 
-    free = ((rooms >= 0) & ~taken).astype(np.uint8)
+    free = ((rooms >= 0) & ~blocked).astype(np.uint8)
     return cv2.distanceTransform(free, cv2.DIST_L2, 5).astype(np.float32) * cell
 
 
