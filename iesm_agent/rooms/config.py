@@ -60,7 +60,7 @@ class RoomConfig(BaseModel):
     wall_share: float = Field(0.15, ge=0)
     min_observed: float = Field(0.2, ge=0, le=1)
     split: bool = True
-    split_min_area: float = Field(8.0, ge=0)
+    split_min_area: float = Field(6.0, ge=0)
     split_purity: float = Field(0.8, ge=0, le=1)
     split_gain: float = Field(0.1, ge=0, le=1)
     split_min_share: float = Field(0.1, ge=0, le=0.5)
