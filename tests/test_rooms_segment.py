@@ -113,3 +113,13 @@ def test_thick_mapped_walls_are_shared_by_the_rooms_they_separate():
     assert (wall[:, 0] == left).all() and (wall[:, -1] == right).all()
     unshared = segment_scene(layout.scene, noisy_labels(layout, 1.0), RoomConfig(wall_share=0))
     assert (unshared.room_map[10:30, 80:86] == -1).all()
+
+
+def test_split_parts_with_the_same_label_are_rejoined():
+    from iesm_agent.rooms.segment import _merge_alike_parts
+
+    room_map = np.array([[0, 0, 2, 2, 3, -1, 1]])
+    parent = [0, 1, 0, 0]                  # rooms 2 and 3 were cut out of component 0
+    labels = np.array([4, 1, 2, 4])        # room 3 ended up with component 0's label
+    merged, merged_labels = _merge_alike_parts(room_map, labels, parent)
+    assert merged.tolist() == [[0, 0, 2, 2, 0, -1, 1]] and merged_labels.tolist() == [4, 1, 2]

@@ -122,7 +122,8 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     lut = np.full(n, -1, np.int32)
     lut[keep] = np.arange(int(keep.sum()), dtype=np.int32)
     room_map = lut[comp]
-    n_rooms, splits = int(keep.sum()), 0
+    n_rooms = int(keep.sum())
+    parent = list(range(n_rooms))  # the free component each room comes from
     if config.split and n_rooms and n_labels >= 2:
         big = area[keep] * cell_area >= config.split_min_area
         for room, (c0, r0, width, height) in enumerate(stats[keep, :4].tolist()):
@@ -134,18 +135,30 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
             parts = _split_component(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_area, config, 0)
             for part in parts[1:]:
                 crop[part] = n_rooms
+                parent.append(room)
                 n_rooms += 1
-                splits += 1
     margin = int(np.ceil((config.dilate + config.close) / cell_size)) + config.line_thickness + 2
     open_cells = ~walls & ~boundaries.lines
     room_map = _grow(room_map, near_known & open_cells, margin)
     building = _enclosed(walls | boundaries.raster)
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
     room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
-    room_labels = _majority_labels(room_map, labels, n_rooms, n_labels)
+    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels),
+                                               parent)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
-                            components=int(keep.sum()), splits=splits, boundaries=boundaries,
-                            notes=list(boundaries.notes))
+                            components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
+                            boundaries=boundaries, notes=list(boundaries.notes))
+
+
+def _merge_alike_parts(room_map: np.ndarray, room_labels: np.ndarray, parent: list[int]) -> tuple[np.ndarray, np.ndarray]:
+    """Rejoin split parts of one component that ended up with the same label; ids renumbered 0..R-1.
+    Returns (room_map, label index per room)."""
+    first: dict[tuple[int, int], int] = {}
+    target = np.array([first.setdefault((parent[room], int(label)), room) for room, label in enumerate(room_labels)],
+                      np.int64)
+    kept, dense = np.unique(target, return_inverse=True)
+    lut = np.append(dense, -1).astype(np.int32)  # room id -1 -> index -1 -> stays -1
+    return lut[room_map], room_labels[kept]
 
 
 def _enclosed(barrier: np.ndarray) -> np.ndarray:
