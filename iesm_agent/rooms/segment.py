@@ -178,18 +178,20 @@ def _grow(room_map: np.ndarray, allowed: np.ndarray, steps: int) -> np.ndarray:
     (geodesic: the drawn boundary lines, left out of `allowed`, stop it at closed doors)."""
     import cv2
 
-    out = room_map.copy()
+    dtype = np.uint16 if room_map.max(initial=0) < np.iinfo(np.uint16).max - 1 else np.float32
+    shifted = (room_map + 1).astype(dtype)  # 0 = no room, so a dilation takes a neighbour's id
     cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))
+    todo = allowed & (shifted == 0)
     for _ in range(steps):
-        todo = allowed & (out < 0)
         if not todo.any():
             break
-        grown = cv2.dilate((out + 1).astype(np.float32), cross)
+        grown = cv2.dilate(shifted, cross)
         take = todo & (grown > 0)
         if not take.any():
             break
-        out[take] = grown[take].astype(np.int32) - 1
-    return out
+        shifted[take] = grown[take]
+        todo &= ~take
+    return shifted.astype(np.int32) - 1
 
 
 def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, max_cells: float) -> np.ndarray:
