@@ -250,3 +250,13 @@ def test_far_apart_objects_are_refused_before_allocating_the_grid(tmp_path):
     with pytest.raises(MapFormatError, match=r"far.json:grid: .*larger --cell-size"):
         import_map(path)
     assert import_map(path, cell_size=2.0).grid.width < 3000  # a coarser grid fits
+
+
+def test_simulator_ground_truth_fields_import(tmp_path):
+    # gt/objects.json from `iesm sim` marks walls as structural and what stands on what
+    wall = {"id": 3, "label": "wall", "center": [2.0, 1.0, 1.25], "size": [0.1, 2.0, 2.5], "structural": True}
+    cup = {"id": 4, "label": "cup", "center": [1.0, 1.0, 0.95], "size": [0.1, 0.1, 0.1], "on": 1}
+    scene = import_map(objects_file(tmp_path, [chair(), wall, cup]), cell_size=0.05)
+    assert sorted(i.id for i in scene.instances) == [1, 3, 4]
+    with pytest.raises(MapFormatError, match="on"):
+        import_map(objects_file(tmp_path, [chair(on="the table")]), cell_size=0.05)

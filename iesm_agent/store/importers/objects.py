@@ -52,6 +52,9 @@ class ObjectSpec(BaseModel):
     caption: Optional[str] = None
     tags: dict[str, str] = Field(default_factory=dict)
     alt_labels: list[str] = Field(default_factory=list)
+    # written by `iesm sim` into gt/objects.json; accepted so ground truth imports as a map
+    structural: bool = False  # wall, door or window: part of the building
+    on: Optional[int] = None  # id of the instance this one stands on
 
 
 class ObjectList(BaseModel):
