@@ -35,7 +35,7 @@ def one_scene(seed: int, tmp: Path) -> dict:
     render_frames(generate_scene(seed, "hm3d"), tmp / "frames")
     frames = FrameSet.open(tmp / "frames")
     scene = build_map(frames)
-    scene = segment_rooms(scene, ViewpointLabels(frames, seed=seed).cell_labels(scene.grid))
+    scene = segment_rooms(scene, ViewpointLabels(tmp / "frames", seed=seed).cell_labels(scene.grid))
     scene = caption_map(scene, frames, OfflineCaptioner())
     save_map(scene, tmp / "map.iesm")
     report = storage_comparison(tmp / "frames", tmp / "map.iesm")
