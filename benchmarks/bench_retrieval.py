@@ -24,6 +24,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -32,6 +33,9 @@ from iesm_agent.providers.cache import CachedModel
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store.mapstore import MapStore
 from iesm_agent.store.model import GridSpec, Instance, Room, SceneMap
+
+sys.path.insert(0, str(Path(__file__).parent))
+from results_io import record  # noqa: E402
 
 LABELS = ["chair", "table", "sofa", "bed", "lamp", "cabinet", "shelf", "plant", "tv", "mug", "book",
           "pillow", "desk", "stool", "mirror", "picture", "rug", "vase", "clock", "sink"]
@@ -130,7 +134,7 @@ def main() -> None:
         results = run_queries(remote, queries)
         rows.append(("(a) MTEFR wall, 200 ms endpoint", p50([r.latency_ms for r in results]), 1.2 * 200, "ms"))
         rows.append(("(a) wall / slowest single call", p50([r.latency_ms / max(c.latency_ms for c in r.calls)
-                                                            for r in results]), 1.2, "x"))
+                                                            for r in results]), 1.1, "x"))
 
     # (b) overhead outside model calls, 300 instances, G = 100 candidates
     rows.append(("(b) overhead, offline model",
@@ -152,12 +156,18 @@ def main() -> None:
         run_queries(retriever, queries)
         cached = run_queries(retriever, queries)
         assert all(r.cache_hits == len(r.calls) for r in cached), "expected every call to hit the cache"
-        rows.append(("(c) fully cached query", p50([r.latency_ms for r in cached]), 5.0, "ms"))
+        rows.append(("(c) fully cached query", p50([r.latency_ms for r in cached]), 2.0, "ms"))
 
     print(f"{'benchmark (p50)':44s} {'value':>10s} {'target':>9s}  ok")
     for name, value, target, unit in rows:
         ok = "-" if target != target else "yes" if value <= target else "NO"
         print(f"{name:44s} {value:8.2f}{unit:2s} {target:7.1f}{unit:2s}  {ok}")
+    by_name = {name: value for name, value, _, _ in rows}
+    for key, name, unit, target in (("mtefr_wall_over_latency", "(a) wall / slowest single call", "x", 1.1),
+                                    ("retrieval_overhead_p50_ms", "(b) overhead, offline model", "ms", 2.0),
+                                    ("cached_query_ms", "(c) fully cached query", "ms", 2.0)):
+        if name in by_name:
+            record(key, by_name[name], unit, f"<= {target:g} {unit}", by_name[name] <= target, note="p50")
 
 
 if __name__ == "__main__":
