@@ -3,7 +3,9 @@
 Queries are generated from gt/objects.json (imported in memory as an object-list map, so the
 built map's own labels never leak into the queries), then each query's target and accepted ids
 are translated to built-map ids with `match_instances` (top-down IoU > 0.5). A query whose
-target has no match is dropped; accepted ids without a match are left out.
+target has no match is dropped; accepted ids without a match are left out. Each query gets a
+seeded random robot start (x, y) in metres on free ground-truth floor, so `iesm eval` can report
+N-SR on the map.
 """
 
 from __future__ import annotations
@@ -14,6 +16,8 @@ import tempfile
 from pathlib import Path
 from typing import Sequence
 
+import numpy as np
+
 from ..evals.generate import GenerationResult, generate_suite
 from ..evals.suite import SuiteQuery, write_suite
 from ..frames import GroundTruth
@@ -21,6 +25,24 @@ from ..store import open_map
 from ..store.importers.objects import ObjectSpec
 from ..store.refs import resolve_map_path
 from .matching import match_instances
+
+
+#: a start keeps at least this much free floor around it, metres
+START_CLEARANCE_M = 0.3
+
+
+def free_starts(gt: GroundTruth, n: int, seed: int) -> list[tuple[float, float]]:
+    """`n` seeded (x, y) metre positions on ground-truth floor inside a room, at least
+    START_CLEARANCE_M from anything that blocks a robot; [] when there is no such floor."""
+    import cv2
+
+    free = ((gt.rooms >= 0) & ~gt.occupancy).astype(np.uint8)
+    clearance = cv2.distanceTransform(free, cv2.DIST_L2, 5) * gt.grid.cell_size
+    cells = np.argwhere(clearance >= START_CLEARANCE_M)
+    if not len(cells) or n == 0:
+        return []
+    picks = cells[np.random.default_rng(seed).integers(0, len(cells), n)]
+    return [tuple(round(v, 2) for v in gt.grid.center_of(int(r), int(c))) for r, c in picks]
 
 
 def translate(queries: Sequence[SuiteQuery], matches: dict[int, int], map_ref: str) -> tuple[list[SuiteQuery], int]:
@@ -54,6 +76,9 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
                                       model=model)
     ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
     queries, dropped = translate(result.queries, match_instances(scene, gt), ref)
+    starts = free_starts(gt, len(queries), seed)
+    if starts:
+        queries = [q.model_copy(update={"start": start}) for q, start in zip(queries, starts)]
     write_suite(queries, out)
     result.queries = queries
     return result, dropped
