@@ -50,7 +50,8 @@ def test_valid_suite_resolves_map_relative_to_suite_file(tmp_path, tiny_map):
     (_line(id="q9", target=7, accept=[7]), "target 7 is not an instance"),
     (_line(id="q9", accept=[1, 99]), "accept id 99 is not an instance"),
     (json.dumps({"id": "q9", "map": "maps/tiny.iesm", "target": 1}), "query: Field required"),
-    (_line(id="q9", type="xyz"), "type: Input should be"),
+    (_line(id="q9", type="a type label that is far too long"), "type: String should have at most"),
+    (_line(id="q9", type="o r"), "type: String should match"),
     (_line(), "duplicate query id 'q1'"),
 ])
 def test_bad_line_names_file_and_line(tmp_path, tiny_map, bad, message):
@@ -60,6 +61,15 @@ def test_bad_line_names_file_and_line(tmp_path, tiny_map, bad, message):
     assert info.value.source == str(path)
     assert info.value.where == "line 2"
     assert str(info.value).startswith(f"{path}:line 2: ")
+
+
+def test_types_are_free_short_labels_reported_after_the_paper_types(tmp_path, tiny_map):
+    from iesm_agent.evals.metrics import ordered_types, type_title
+
+    path = _write(tmp_path, [_line(type="spatial"), _line(id="q2", type="s"), _line(id="q3", type="ord")])
+    assert [e.query.type for e in load_suites([path]).entries] == ["spatial", "s", "ord"]
+    assert ordered_types({"spatial", "s", "ord", "o"}) == ["o", "ord", "s", "spatial"]
+    assert [type_title(t) for t in ("ord", "spatial")] == ["(o,r,d)", "spatial"]
 
 
 def test_skip_invalid_collects_errors_and_keeps_the_rest(tmp_path, tiny_map):

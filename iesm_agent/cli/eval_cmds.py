@@ -72,12 +72,12 @@ def _print_table(summary: dict) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from ..evals.metrics import TYPE_TITLES
+    from ..evals.metrics import type_title
 
     table = Table(title="O-SR (%) by query type")
     table.add_column("variant", no_wrap=True)
     for t in summary["types"]:
-        table.add_column(TYPE_TITLES[t], justify="right")
+        table.add_column(type_title(t), justify="right")
     for column in ("overall", "MRR", "top-3"):
         table.add_column(column, justify="right")
     for name, m in summary["methods"].items():

@@ -10,8 +10,19 @@ from typing import Iterable, Optional, Sequence
 from .journal import ResultRecord
 
 QUERY_TYPES = ("o", "or", "od", "ord", "ard")
-TYPE_TITLES = {"o": "(o)", "or": "(o,r)", "od": "(o,d)", "ord": "(o,r,d)", "ard": "(a,r,d)"}
+TYPE_TITLES = {"o": "(o)", "or": "(o,r)", "od": "(o,d)", "ord": "(o,r,d)", "ard": "(a,r,d)", "s": "(s)"}
 UNTYPED = "-"
+
+
+def ordered_types(types: Iterable[str]) -> list[str]:
+    """The paper's five types in their order, then any other label alphabetically."""
+    types = set(types)
+    return [t for t in QUERY_TYPES if t in types] + sorted(types - set(QUERY_TYPES))
+
+
+def type_title(t: str) -> str:
+    """Column title of a query type: "(o,r)" for the paper's types, the label itself otherwise."""
+    return TYPE_TITLES.get(t, t)
 
 
 def osr(records: Sequence[ResultRecord]) -> float:
@@ -77,7 +88,7 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
         by_type: dict[str, list[ResultRecord]] = defaultdict(list)
         for record in group:
             by_type[record.type or UNTYPED].append(record)
-        order = [t for t in QUERY_TYPES if t in by_type] + sorted(set(by_type) - set(QUERY_TYPES))
+        order = ordered_types(by_type)
         overall = _overall(group)
         typed = [osr(by_type[t]) for t in order if t != UNTYPED]
         overall["osr_type_mean"] = statistics.fmean(typed) if typed else None

@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Sequence
 
 from .journal import ResultRecord
-from .metrics import QUERY_TYPES, TYPE_TITLES, UNTYPED, summarize
+from .metrics import UNTYPED, ordered_types, summarize, type_title
 from .significance import compare_to_first
 
 PLOT = "osr_by_type.png"
@@ -22,7 +22,7 @@ def build_summary(records: Sequence[ResultRecord], variants: Sequence[str], extr
     correct: dict[str, dict[str, bool]] = {v: {} for v in summary["methods"]}
     for r in records:
         correct[r.variant][r.id] = r.correct
-    summary["types"] = [t for t in QUERY_TYPES if t in set(types.values())]
+    summary["types"] = ordered_types(set(types.values()) - {UNTYPED})
     summary["significance"] = compare_to_first(correct, types, list(summary["methods"]))
     summary.update(extra or {})
     return summary
@@ -40,14 +40,14 @@ def render_markdown(summary: dict, plot: str | None) -> str:
         lines += [f"Provider `{run.get('provider')}`, suites {', '.join(f'`{s}`' for s in run.get('suites', []))}, "
                   f"{run.get('queries')} queries x {len(methods)} variants.", ""]
     lines += ["## Object retrieval success rate (O-SR, %) by query type", "",
-              "| Method | " + " | ".join(TYPE_TITLES[t] for t in types) + " | type mean | overall |",
+              "| Method | " + " | ".join(type_title(t) for t in types) + " | type mean | overall |",
               "|---|" + "---:|" * (len(types) + 2)]
     for name, m in methods.items():
         cells = [_pct(m["by_type"][t]["osr"]) if t in m["by_type"] else "-" for t in types]
         lines.append(f"| {name} | " + " | ".join(cells)
                      + f" | {_pct(m['overall']['osr_type_mean'])} | {_pct(m['overall']['osr'])} |")
     lines += ["", "Queries per type: " + ", ".join(
-        f"{TYPE_TITLES[t]} {next(iter(methods.values()))['by_type'][t]['n']}" for t in types), ""]
+        f"{type_title(t)} {next(iter(methods.values()))['by_type'][t]['n']}" for t in types), ""]
     if plot:
         lines += [f"![O-SR by query type]({plot})", ""]
     lines += ["## Ranking and cost", "",
@@ -61,7 +61,7 @@ def render_markdown(summary: dict, plot: str | None) -> str:
                      f"| {o['queries_with_failures']} | {_pct(o['candidate_recall'])} |")
     if any(m["overall"].get("nsr") is not None for m in methods.values()):
         lines += ["", "## Navigation success given correct retrieval (N-SR, %)", "",
-                  "| Method | " + " | ".join(TYPE_TITLES[t] for t in types) + " | overall |",
+                  "| Method | " + " | ".join(type_title(t) for t in types) + " | overall |",
                   "|---|" + "---:|" * (len(types) + 1)]
         for name, m in methods.items():
             cells = [_pct(m["by_type"].get(t, {}).get("nsr")) for t in types]
@@ -71,7 +71,7 @@ def render_markdown(summary: dict, plot: str | None) -> str:
                   "`A only` / `B only`: queries only that variant got right.", "",
                   "| A | B | type | n | A only | B only | p |", "|---|---|---|---:|---:|---:|---:|"]
         for t in summary["significance"]:
-            title = TYPE_TITLES.get(t["type"], t["type"])
+            title = type_title(t["type"])
             lines.append(f"| {t['a']} | {t['b']} | {title} | {t['n']} | {t['a_only']} | {t['b_only']} | {t['p']:.4f} |")
     invalid = summary.get("invalid_lines", [])
     if invalid:
@@ -94,7 +94,7 @@ def plot_osr(summary: dict, path: Path) -> bool:
     for k, (name, m) in enumerate(methods.items()):
         values = [100 * m["by_type"].get(t, {}).get("osr", 0.0) for t in types]
         ax.bar([i + (k - (len(methods) - 1) / 2) * width for i in range(len(types))], values, width, label=name)
-    ax.set_xticks(range(len(types)), [TYPE_TITLES[t] for t in types])
+    ax.set_xticks(range(len(types)), [type_title(t) for t in types])
     ax.set_ylabel("O-SR (%)")
     ax.set_ylim(0, 100)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)

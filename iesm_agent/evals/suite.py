@@ -12,7 +12,7 @@ import os
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterable, Literal, Optional
+from typing import Annotated, Iterable, Optional
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -20,7 +20,9 @@ from ..errors import IesmError
 from ..store.model import SceneMap
 from ..store.refs import open_map, resolve_map_path
 
-QueryType = Literal["o", "or", "od", "ord", "ard"]
+#: a query type is a free short label; the paper's five (o, or, od, ord, ard) keep their meaning and
+#: order in reports, any other label (e.g. "s" for spatial) gets its own column after them
+QueryType = Annotated[str, Field(min_length=1, max_length=24, pattern=r"^[A-Za-z0-9_.,\-]+$")]
 
 
 class SuiteQuery(BaseModel):
