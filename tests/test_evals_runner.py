@@ -49,6 +49,7 @@ def test_split_methods_keeps_expert_lists_together():
     assert split_methods(["mtefr,spr,keyword,experts:obj,experts:obj,desc,experts:obj,room"]) == [
         "mtefr", "spr", "keyword", "experts:obj", "experts:obj,desc", "experts:obj,room"]
     assert split_methods(["spr", "experts:obj,desc"]) == ["spr", "experts:obj,desc"]
+    assert split_methods(["experts:obj,room,mtefr-uniform"]) == ["experts:obj,room", "mtefr-uniform"]
 
 
 def test_prompt_dirs_make_one_variant_per_method_and_dir(tmp_path):

@@ -24,7 +24,7 @@ from .report import build_summary, write_outputs
 from .suite import MapRegistry, Suite, SuiteEntry, load_suites
 
 RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
-BASE_METHODS = ("mtefr", "spr", "keyword")
+BASE_METHODS = ("mtefr", "mtefr-uniform", "spr", "keyword")
 
 
 class Variant(BaseModel):
