@@ -64,6 +64,16 @@ def _eval(suite, run, server, *extra):
             "--concurrency", "2", *extra]
 
 
+def _settled_request_count(server, quiet_s=0.5):
+    """The server's request count once no request of the killed client is still arriving (a
+    request it sent just before the kill can reach a handler thread after the kill)."""
+    count = -1
+    while count != server.request_count:
+        count = server.request_count
+        time.sleep(quiet_s)
+    return count
+
+
 @pytest.mark.slow
 def test_killed_run_resumes_to_the_same_results(tmp_path, suite):
     from iesm_agent.providers.loopback import LoopbackServer
@@ -87,7 +97,7 @@ def test_killed_run_resumes_to_the_same_results(tmp_path, suite):
         before = len(read_journal(journal))
         assert 5 <= before < total, "the kill should land mid-run"
 
-        requests = server.request_count
+        requests = _settled_request_count(server)
         resumed = subprocess.run(_eval(suite, run, server, "--resume"), env=env, capture_output=True, text=True)
         assert resumed.returncode == 0, resumed.stderr
         new = read_journal(journal)[before:]
