@@ -74,6 +74,7 @@ class RetrievalResult(BaseModel):
         for expert, ids in self.experts.items():
             picks = ", ".join(f"#{i} {name(i, '?')}" for i in ids) or "(nothing)"
             lines.append(f"  {expert} expert: {picks}")
+        lines.extend(self._agreement())
         scored = [i for i in self.ranking if i in self.scores][:top]
         for i in scored:
             voters = [e for e, ids in self.experts.items() if i in ids]
@@ -86,3 +87,24 @@ class RetrievalResult(BaseModel):
         for failure in self.failures:
             lines.append(f"failure: {failure}")
         return "\n".join(lines)
+
+    def _agreement(self) -> list[str]:
+        """One line: whether the experts' top picks agree, and when they do not, which pick the
+        fusion followed and the gate weight behind it."""
+        tops: dict[int, list[str]] = {}
+        for expert, ids in self.experts.items():
+            if ids:
+                tops.setdefault(ids[0], []).append(expert)
+        if len(tops) < 2:
+            return [f"experts agree on the top pick #{next(iter(tops))}"] if tops else []
+        picks = "; ".join(f"{', '.join(e)} -> #{i}" for i, e in tops.items())
+        line = f"experts disagree on the top pick: {picks}"
+        backers = tops.get(self.instance_id) if self.instance_id is not None else None
+        if backers and self.gate:
+            weight = sum(self.gate.get(e, 0.0) for e in backers)
+            others = max(sum(self.gate.get(e, 0.0) for e in es) for i, es in tops.items() if i != self.instance_id)
+            line += (f"; fusion followed {', '.join(backers)} (weight {weight:.2f} against "
+                     f"{others:.2f})")
+        elif self.instance_id is not None:
+            line += f"; fusion chose #{self.instance_id}, no expert's top pick (ranked high by several)"
+        return [line]

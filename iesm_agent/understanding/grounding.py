@@ -11,10 +11,14 @@ from typing import Any
 import numpy as np
 
 from .labels import label_concepts
-from .query import QueryInfo
+from ..lexicon import load_lexicon
+from .query import QueryInfo, functional_kin
 
-#: cosine similarity (all-MiniLM-L6-v2) a map label or room must reach to stand for an unknown phrase
+#: cosine similarity (all-MiniLM-L6-v2) a map label or room must reach to stand for an unknown
+#: phrase, and its lead over the runner-up (single words embed loosely: "washroom" is as near to
+#: "bedroom" as to "living room", so a near tie grounds nothing)
 MIN_SIMILARITY = 0.45
+MIN_MARGIN = 0.05
 _CACHE_SIZE = 4096
 _grounded: dict[tuple, QueryInfo] = {}
 _vectors: dict[tuple[str, str], np.ndarray] = {}
@@ -45,9 +49,11 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
             found_rooms[room] = 1.0
     grounded = info
     if targets != info.targets or found_rooms != info.rooms:
-        grounded = dataclasses.replace(info, targets=targets, rooms=found_rooms, memo={},
-                                       target_phrase=info.target_phrase or info.unknown_target,
-                                       room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
+        kin = functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0])
+        grounded = dataclasses.replace(
+            info, targets=targets, kin=kin, rooms=found_rooms, memo={},
+            target_phrase=info.target_phrase or (info.unknown_target if targets != info.targets else None),
+            room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
     if len(_grounded) >= _CACHE_SIZE:
         _grounded.clear()
     _grounded[key] = grounded
@@ -55,12 +61,16 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
 
 
 def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> tuple[str | None, float]:
-    """The option nearest to `phrase` and its cosine, or (None, best cosine) below the bar."""
+    """The option nearest to `phrase` and its cosine; None for the option when the best is
+    below MIN_SIMILARITY or within MIN_MARGIN of the runner-up."""
     if not options:
         return None, 0.0
     sims = _encode(encoder, options) @ _encode(encoder, [phrase])[0]
-    best = int(np.argmax(sims))
-    return (options[best] if sims[best] >= MIN_SIMILARITY else None), float(sims[best])
+    order = np.argsort(-sims)
+    best = float(sims[order[0]])
+    runner_up = float(sims[order[1]]) if len(order) > 1 else -1.0
+    clear = best >= MIN_SIMILARITY and best - runner_up >= MIN_MARGIN
+    return (options[int(order[0])] if clear else None), best
 
 
 def _encode(encoder: Any, texts: Sequence[str]) -> np.ndarray:

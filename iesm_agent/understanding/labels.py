@@ -21,6 +21,7 @@ class Record:
     """A candidate's lexical profile, built from whatever fields it has."""
 
     concepts: tuple[tuple[str, float], ...]  # (category, weight), best first
+    label: str                   # the raw label as given
     room: str | None
     attrs: frozenset[tuple[str, str]]
     words: frozenset[str]        # lemmas of label, caption and tags
@@ -180,7 +181,7 @@ def _record(data: dict) -> Record:
             sl, st = text_slots(part)
             slots.update(dict.fromkeys(sl))
             stems |= st
-    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), room=room,
+    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
                   attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
                   text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems))
 

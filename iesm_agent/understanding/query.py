@@ -28,6 +28,7 @@ class QueryInfo:
     attrs: list[tuple[str, str]] = field(default_factory=list)  # (kind, canonical value)
     extra: frozenset[str] = frozenset()                       # other content lemmas
     afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
+    kin: dict[str, float] = field(default_factory=dict)       # kinds that serve the named kind's purpose
     abstract: bool = False                                    # "something", "a place to ..."
     head_words: frozenset[str] = frozenset()                  # lemmas of the target phrase
     slots: tuple[Slot, ...] = ()                              # attributes as written (surface + family)
@@ -135,6 +136,7 @@ def analyse_query(text: str) -> QueryInfo:
     if afford:
         top = max(afford.values())
         info.afford = {c: w / top for c, w in afford.items()}
+    info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     slots, used = read_slots(lex, lemmas, attr_spans)
     info.slots = tuple(dict.fromkeys(slots))
     stop = skip | bounds | lex.words["abstract"] | lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
@@ -152,6 +154,27 @@ def analyse_query(text: str) -> QueryInfo:
             stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
             info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
     return info
+
+
+#: share of an affordance weight a kind gets as functional kin of the named category
+_KIN_SCALE = 0.8
+#: a purpose counts as the named category's own when the category is among its first three
+#: typical kinds (weight 1.0, 0.98, 0.96: chair for sitting, not for reaching a high shelf)
+_OWN_PURPOSE = 0.96
+#: of such a purpose, only its most typical kinds (the first six) are kin
+_TYPICAL = 0.9
+
+
+def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
+    """Kinds that serve the same purpose as a named category (chair -> sofa, stool, bench): the
+    most typical kinds of the affordance entries whose first kinds include it, 0.8 x their weight."""
+    kin: dict[str, float] = {}
+    for entry in lex.affordances:
+        if any(entry.get(c, 0.0) >= _OWN_PURPOSE for c in named):
+            for concept, weight in entry.items():
+                if weight >= _TYPICAL:
+                    kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
+    return kin
 
 
 #: prepositions that introduce the room an object is in ("the sink in the scullery")

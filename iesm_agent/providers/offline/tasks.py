@@ -7,17 +7,9 @@ from typing import Any, Callable
 import numpy as np
 
 from ...lexicon import load_lexicon
-from ...understanding import QueryInfo, Record, Slot, analyse_query, candidate_from_line, stem
+from ...understanding import QueryInfo, Record, Slot, analyse_query, candidate_from_line, ground_query, stem
 from .prompt import Prompt, focus_role
 
-#: component weights per expert role: label, room, description, affordance, text overlap, embedding
-_WEIGHTS = {
-    "obj":  np.array([1.0, 0.1, 0.1, 0.3, 0.2, 0.2]),
-    "room": np.array([0.6, 1.0, 0.1, 0.3, 0.2, 0.1]),
-    "desc": np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3]),
-    "abs":  np.array([0.4, 0.3, 0.3, 1.0, 0.2, 0.2]),
-    "all":  np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3]),
-}
 _KNOWN_ROLES = {"obj": "obj", "object": "obj", "room": "room", "desc": "desc", "description": "desc",
                 "abs": "abs", "abstract": "abs"}
 
@@ -37,23 +29,26 @@ def gate(prompt: Prompt) -> dict:
 
 
 def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
-    """0-4 per built-in expert. A named category decides (o) queries alone; once a room or
-    details are given, those separate the instances of that category, so they score higher."""
+    """0-4 per built-in expert. A named category is the decisive evidence (4): labels are the
+    mapper's most reliable output. A named room (3) and visual details (3, 2 for one loose
+    word) qualify it, and outvote it only together (two experts agreeing on another instance).
+    Without a category, the function asked for decides (abstract expert 4)."""
     attrs = " ".join(v for _, v in q.attrs)
-    n_desc = len(q.attrs) + 0.5 * min(2, len(q.extra))
-    explicit_room = any(w >= 1.0 for w in q.rooms.values())
+    loose = q.extra - _unknown_words(q)
+    n_desc = len(q.attrs) + 0.5 * min(2, len(loose))
+    explicit_room = any(w >= 1.0 for w in q.rooms.values()) or bool(q.unknown_room)
     if role == "obj":
         if q.named:
-            return (3 if explicit_room or n_desc else 4), q.target_phrase or ""
-        return (2 if q.generic else 1 if q.targets else 0), q.target_phrase or ""
+            return 4, q.target_phrase or ""
+        return (2 if q.generic or q.unknown_target else 1 if q.targets else 0), q.target_phrase or q.unknown_target or ""
     if role == "room":
-        score = (4 if q.named and not n_desc else 3) if explicit_room else 1 if q.rooms else 0
-        return score, q.room_phrase or " ".join(q.rooms)
+        score = 3 if explicit_room else 1 if q.rooms else 0
+        return score, q.room_phrase or q.unknown_room or " ".join(q.rooms)
     if role == "desc":
         if n_desc == 0:
             return 0, attrs
         if q.named:
-            return 4, attrs
+            return (3 if q.attrs else 2), attrs
         return min(3 if q.afford else 4, round(1.5 + 1.5 * n_desc)), attrs
     top = [c for c, w in sorted(q.afford.items(), key=lambda kv: -kv[1]) if w >= 1.0][:4]
     if q.named:
@@ -65,11 +60,24 @@ def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
     return score, ", ".join(top)
 
 
+def _unknown_words(q: QueryInfo) -> frozenset[str]:
+    """Lowercase words of the query's unknown target and room phrases."""
+    return frozenset(" ".join(filter(None, (q.unknown_target, q.unknown_room))).lower().split())
+
+
+#: function words that say nothing about which expert fits ("in", "to", "of"); spatial and
+#: comparative words ("next", "under", "left") are kept: a plug-in expert may name them
+_PLUGIN_STOP = frozenset({"to", "for", "that", "which", "who", "where", "when", "i", "you", "we", "they",
+                          "so", "in", "inside", "into", "within", "at", "from", "with", "of", "can",
+                          "could", "used", "meant", "made", "designed", "while", "if", "and", "or", "but"})
+
+
 def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
-    """An unknown expert scores by the overlap of its description with the query's words."""
+    """An unknown expert scores by the overlap of its description with the query's words
+    (2 per shared word or attribute kind, at most 4)."""
     lex = load_lexicon()
     desc_words = {lex.lemma(t) for t in lex.tokens(description)}
-    query_words = {lex.lemma(t) for t in lex.tokens(q.text)} - lex.words["skip"] - lex.words["boundaries"]
+    query_words = {lex.lemma(t) for t in lex.tokens(q.text)} - lex.words["skip"] - _PLUGIN_STOP
     kinds = {k for k, _ in q.attrs}
     hits = sorted(query_words & desc_words) + sorted(k for k in kinds if k in desc_words)
     return min(4, 2 * len(hits)), " ".join(hits)
@@ -77,41 +85,43 @@ def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
 
 # -- ranking ---------------------------------------------------------------------------------
 #: index of each component in a candidate's row
-_LABEL, _ROOM, _DESC, _AFFORD, _TEXT, _EMB = range(6)
+_LABEL, _ROOM, _DESC, _AFFORD, _TEXT, _EMB, _KIN = range(7)
+_N_COMPONENTS = 7
 #: a candidate is "of the asked-for kind" when its category (or function) fit reaches this share
 #: of the best fit among the candidates (1.0 exact, 0.9 more specific kind: all in; 0.6 parent: out)
 _TIER_SHARE = 0.75
-#: within the asked-for kind, how much the graded fit still counts for experts whose focus is
-#: something else (a side table is as much "a table" as a table is)
-_INNER_GATE_WEIGHT = {"room": 0.25, "desc": 0.25, "abs": 0.5, "all": 0.5}
-#: every component counts this much on top of the focus weights, so that ties left by the focus
+#: within the asked-for kind, how much the graded fit still counts for the single-pass ranker
+#: (a side table is as much "a table" as a table is)
+_INNER_GATE_WEIGHT = 0.5
+#: every component counts this much on top of the focus evidence, so that ties left by the focus
 #: evidence are broken by the rest of the evidence before the id decides
 _TIE_BREAK = 0.02
+#: what each role ranks by, in order; a later key only separates candidates the earlier ones tie
+_FIRST, _SECOND = 100.0, 10.0
 
 
 def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
-    """Top-kappa candidate ids. `encoder()` gives the sentence encoder (or None); it is asked
-    for only when embedding similarity would count: for the roles that weigh it, when the
-    query carries description words or gives the lexicon nothing to go on."""
+    """Top-kappa candidate ids, ranked by the evidence the expert's focus line names first
+    (category, room, appearance or function; every kind of evidence for a prompt without a
+    focus). `encoder()` gives the sentence encoder (or None); it is asked for only when
+    embedding similarity would count, or to ground words the lexicon does not know."""
     q = analyse_query(prompt.query)
-    ids, records, comp = _candidate_matrix(q, prompt.candidate_lines)
+    parsed = _parse_candidates(prompt.candidate_lines)
+    if q.unknown_target or q.unknown_room:
+        enc = encoder() if encoder is not None else None
+        q = ground_query(q, [r.room for _, r in parsed if r.room], [r.label for _, r in parsed if r.label], enc)
+    ids, records, comp = _candidate_matrix(q, parsed)
     if not len(ids):
         return {"ranked_instance_ids": []}
     role = focus_role(prompt.focus) if prompt.focus else "all"
-    weights = _WEIGHTS[role].copy()
     lexical = bool(q.targets or q.afford)
-    if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
-        weights[_TEXT], weights[_EMB] = max(weights[_TEXT], 0.5), max(weights[_EMB], 1.0)
-    wants_embeddings = weights[_EMB] > 0.25 and (not lexical or q.attrs or q.extra)
+    wants_embeddings = not lexical or q.attrs or q.extra
     enc = encoder() if encoder is not None and wants_embeddings else None
     if enc is not None:
         comp = comp.copy()
         comp[:, _EMB] = _embedding_scores(enc, q.text, records)
-    tier, gate_col = _tiers(q, comp)
-    if gate_col is not None and role != "obj":
-        weights[gate_col] = min(weights[gate_col], _INNER_GATE_WEIGHT[role])
-    scores = comp @ (weights + _TIE_BREAK) + tier * 10.0
-    relevant = ((comp @ weights) > 1e-9) | (tier >= 2)  # the named kind stays, whatever else it lacks
+    scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
+    scores = scores + _TIE_BREAK * comp.sum(axis=1)
     order = np.lexsort((ids, -scores))
     ranked: list[int] = []
     for i in order:
@@ -122,60 +132,133 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     return {"ranked_instance_ids": ranked}
 
 
-def _tiers(q: QueryInfo, comp: np.ndarray) -> tuple[np.ndarray, int | None]:
-    """Category gating. When the query names a category, candidates of that kind rank above
-    partial matches, which rank above everything else, in every expert; with no category but a
-    function ("something to sit on"), the same holds for the objects that serve it."""
-    if q.named:
-        col = _LABEL
-    elif q.afford:
-        col = _AFFORD
-    else:
-        return np.zeros(len(comp)), None
-    fit = comp[:, col]
-    best = float(fit.max())
+def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
+    """2 for candidates of the asked-for kind (the named category, or with no category the
+    objects that serve the function asked for), 1 for partial or related kinds, 0 otherwise;
+    all 0 when the query asks for no kind."""
+    fit = _kind_fit(q, comp)
+    best = float(fit.max()) if len(fit) else 0.0
     if best < 0.3:
-        return np.zeros(len(comp)), None
-    return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0)), col
+        return np.zeros(len(comp))
+    return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0))
 
 
-def _candidate_matrix(q: QueryInfo, lines: list[str]) -> tuple[np.ndarray, list[Record], np.ndarray]:
-    """(ids, records, components) for the candidate lines; memoised per query on the whole block
-    (the same block comes with each expert prompt) and per line (lines repeat across queries)."""
-    key = ("block", "\n".join(lines))
+def _kind_fit(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
+    return comp[:, _LABEL] if q.named else comp[:, _AFFORD] if q.afford else np.zeros(len(comp))
+
+
+def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarray:
+    """Candidates of the asked-for kind, a partial or related kind, or a kind that serves the
+    same purpose (stool for chair); every candidate when the query asks for no kind."""
+    if not tier.any() and not comp[:, _KIN].any():
+        return np.ones(len(comp), dtype=bool)
+    return (tier >= 1) | (comp[:, _KIN] > 0)
+
+
+def _score_all(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
+    """No focus (single pass): the asked-for kind first, then all evidence together."""
+    weights = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0])
+    if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
+        weights[_TEXT], weights[_EMB] = 0.5, 1.0
+    tier = _kind_tier(q, comp)
+    if tier.any():
+        weights[_LABEL if q.named else _AFFORD] = _INNER_GATE_WEIGHT
+    evidence = comp @ weights
+    return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
+
+
+def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Category first: the named kind (a more specific kind counts as that kind), or with no
+    category the kinds that serve the asked-for function; the other evidence (room, appearance,
+    text) only orders candidates of the same tier, the label's graded fit last."""
+    tier = _kind_tier(q, comp)
+    evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0])
+    return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
+
+
+def _plausibility(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarray:
+    """How plausible a candidate is for the request, whatever its room: the named kind, then
+    partial and related kinds, then kinds that serve the same purpose, then text evidence."""
+    return (3.0 * tier + comp[:, _LABEL] + 0.5 * comp[:, _AFFORD] + 0.5 * comp[:, _KIN]
+            + 0.1 * comp[:, _DESC] + 0.2 * comp[:, _TEXT] + 0.2 * comp[:, _EMB])
+
+
+def _score_room(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Room first: plausible candidates in the room the query mentions, even when none of them
+    is the named kind (then related kinds, or what serves the same purpose); then the rest by
+    plausibility. Objects unrelated to the request do not count as being in the room."""
+    tier = _kind_tier(q, comp)
+    plausible = _plausibility(q, comp, tier)
+    in_room = comp[:, _ROOM] * _related_kind(q, comp, tier)
+    return _FIRST * in_room + plausible, plausible > 1e-9
+
+
+def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Appearance first among the asked-for and related kinds (a red stool before a black chair
+    for "the red chair"), then the kind, then the label's fit; unrelated objects after them."""
+    tier = _kind_tier(q, comp)
+    related = _related_kind(q, comp, tier)
+    desc = comp[:, _DESC] + (0.3 * comp[:, _EMB] if not q.slots else 0.0)
+    score = _FIRST * related + _SECOND * desc + 3.0 * tier + comp[:, _LABEL] + 0.3 * comp[:, _TEXT]
+    return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3]) > 1e-9) | (tier >= 2)
+
+
+def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Function and intent first: the kinds that serve the purpose the query expresses (for a
+    named category, the purpose that kind serves: chair -> sofa, stool, bench too), then the
+    room and caption details to choose among them, then the label."""
+    if q.afford:
+        fn = comp[:, _AFFORD]
+    elif q.named:
+        fn = np.maximum(comp[:, _LABEL], comp[:, _KIN])
+    else:
+        fn = comp[:, _TEXT] + comp[:, _EMB]
+    best = float(fn.max()) if len(fn) else 0.0
+    tier = np.where(fn >= _TIER_SHARE * best, 2.0, np.where(fn > 0, 1.0, 0.0)) if best > 0 else np.zeros(len(fn))
+    details = comp[:, _ROOM] + comp[:, _DESC] + 0.3 * comp[:, _TEXT]
+    score = _SECOND * tier + details + 0.5 * fn + 0.3 * comp[:, _LABEL]
+    return score, (fn + details > 1e-9)
+
+
+_ROLE_SCORES = {"obj": _score_obj, "room": _score_room, "desc": _score_desc, "abs": _score_abs, "all": _score_all}
+
+
+def _parse_candidates(lines: list[str]) -> list[tuple[int, Record]]:
+    """(id, record) of each readable candidate line, first occurrence of an id only."""
+    out: list[tuple[int, Record]] = []
+    seen: set[int] = set()
+    for line in lines:
+        parsed = candidate_from_line(line)
+        if parsed is not None and parsed[0] not in seen:
+            seen.add(parsed[0])
+            out.append(parsed)
+    return out
+
+
+def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[np.ndarray, list[Record], np.ndarray]:
+    """(ids, records, components (N, 7)) for the parsed candidates; memoised per query on the
+    whole block (the same block comes with each expert prompt)."""
+    key = ("block", tuple(i for i, _ in parsed), tuple(id(r) for _, r in parsed))
     hit = q.memo.get(key)
     if hit is not None:
         return hit
     lex = load_lexicon()
-    ids: list[int] = []
-    records: list[Record] = []
-    rows: list[tuple[float, ...]] = []
-    seen: set[int] = set()
-    for line in lines:
-        parsed = candidate_from_line(line)
-        if parsed is None:
-            continue
-        ident, record = parsed
-        if ident in seen:
-            continue
-        seen.add(ident)
-        ids.append(ident)
-        records.append(record)
-        rows.append(_components(lex, q, record))
-    out = (np.array(ids, dtype=np.int64), records,
-           np.array(rows, dtype=np.float64).reshape(len(rows), 6))
+    records = [r for _, r in parsed]
+    rows = [_components(lex, q, r) for r in records]
+    out = (np.array([i for i, _ in parsed], dtype=np.int64), records,
+           np.array(rows, dtype=np.float64).reshape(len(rows), _N_COMPONENTS))
     if len(q.memo) < 4096:
         q.memo[key] = out
     return out
 
 
 def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
-    """label, room, description, affordance, text overlap (embedding filled in later).
+    """label, room, description, affordance, text overlap, embedding (filled in later), kin.
 
     Memoised per query on the parts candidates share (single concepts, rooms, attribute slots),
     so a value that recurs across candidates is scored once per query."""
     memo = q.memo
-    label = afford = 0.0
+    label = afford = kin = 0.0
     for cc, wc in r.concepts:
         key = ("c", cc)
         sims = memo.get(key)
@@ -183,6 +266,7 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
             sims = memo[key] = _concept_fit(lex, q, cc)
         label = max(label, wc * sims[0])
         afford = max(afford, wc * sims[1])
+        kin = max(kin, wc * sims[2])
     if label and q.head_words:  # the label literally says (part of) what the query says
         label += 0.05 * len(q.head_words & r.label_words) / len(q.head_words)
     key = ("r", r.room)
@@ -194,7 +278,7 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
     if q.slots:
         desc = sum(_slot_match(lex, q, i, r) for i in range(len(q.slots))) / len(q.slots)
     text = len(q.overlap & r.stems) / len(q.overlap) if q.overlap else 0.0
-    return label, room, desc, afford, text, 0.0
+    return label, room, desc, afford, text, 0.0, kin
 
 
 def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
@@ -243,15 +327,20 @@ def _slot_sim(lex, slot: Slot, other: Slot) -> float:
     return 0.0
 
 
-def _concept_fit(lex, q: QueryInfo, cc: str) -> tuple[float, float]:
-    """(category fit, function fit) of one candidate category for the query."""
+def _concept_fit(lex, q: QueryInfo, cc: str) -> tuple[float, float, float]:
+    """(category fit, function fit, functional-kin fit) of one candidate category for the query."""
     label = max((wq * lex.concept_sim(qc, cc) for qc, wq in q.targets.items()), default=0.0)
-    afford = 0.0
-    if q.afford:
-        afford = q.afford.get(cc, 0.0)
-        for parent in lex.ancestors.get(cc, ()):
-            afford = max(afford, 0.8 * q.afford.get(parent, 0.0))
-    return label, afford
+    return label, _by_kind(lex, q.afford, cc), _by_kind(lex, q.kin, cc)
+
+
+def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
+    """The weight of `cc` in `weights`, or 0.8 x that of its nearest listed ancestor."""
+    if not weights:
+        return 0.0
+    fit = weights.get(cc, 0.0)
+    for parent in lex.ancestors.get(cc, ()):
+        fit = max(fit, 0.8 * weights.get(parent, 0.0))
+    return fit
 
 
 def _embedding_scores(encoder, query: str, records: list[Record]) -> np.ndarray:
