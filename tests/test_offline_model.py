@@ -268,3 +268,25 @@ def test_sizes_read_from_labels_and_captions_including_superlatives(model, lib, 
                       candidates=candidates, kappa=2)
     ranked = json.loads(model.complete(msgs).text)["ranked_instance_ids"]
     assert ranked[0] == expected and 3 not in ranked
+
+
+FOCUS_CANDS = [
+    {"id": 1, "label": "armchair", "room": "living room", "caption": "A deep blue velvet armchair."},
+    {"id": 2, "label": "chair", "room": "office", "caption": "A red leather swivel chair."},
+    {"id": 3, "label": "chair", "room": "kitchen", "caption": "A plain wooden dining chair."},
+    {"id": 4, "label": "desk", "room": "kitchen", "caption": "A red lacquered desk."},
+]
+
+
+@pytest.mark.parametrize("focus, expected", [
+    # plug-in experts worded in their own way: the model follows the evidence each names first
+    ("Prefer candidates whose kind or class is the one the user names.", 1),
+    ("Where it is: a candidate located in the place the query names comes first.", 3),
+    ("Looks: how well the colour and finish of a candidate fit the query.", 2),
+    ("Rank the candidates.", 1),  # no evidence named: every kind together, the named category first
+])
+def test_a_plugin_focus_is_followed_as_written(model, lib, focus, expected):
+    # a named kind, a room holding only a relative of it, a colour only a relative has
+    msgs = lib.render("expert.j2", query="the red armchair in the kitchen", focus=focus, hint="",
+                      candidates=FOCUS_CANDS, kappa=2)
+    assert json.loads(model.complete(msgs).text)["ranked_instance_ids"][0] == expected

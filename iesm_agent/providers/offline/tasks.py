@@ -215,8 +215,8 @@ def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
         fn = comp[:, _TEXT] + comp[:, _EMB]
     best = float(fn.max()) if len(fn) else 0.0
     tier = np.where(fn >= _TIER_SHARE * best, 2.0, np.where(fn > 0, 1.0, 0.0)) if best > 0 else np.zeros(len(fn))
-    details = comp[:, _ROOM] + comp[:, _DESC] + 0.3 * comp[:, _TEXT]
-    score = _SECOND * tier + details + 0.5 * fn + 0.3 * comp[:, _LABEL]
+    details = comp[:, _ROOM] + comp[:, _DESC] + 0.3 * comp[:, _TEXT] + 0.3 * comp[:, _EMB]
+    score = _SECOND * tier + details + 0.1 * fn + 0.1 * comp[:, _LABEL]
     return score, (fn + details > 1e-9)
 
 
