@@ -132,19 +132,20 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     return {"ranked_instance_ids": ranked}
 
 
-def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
-    """2 for candidates of the asked-for kind (the named category, or with no category the
-    objects that serve the function asked for), 1 for partial or related kinds, 0 otherwise;
-    all 0 when the query asks for no kind."""
-    fit = _kind_fit(q, comp)
+def _tiers(fit: np.ndarray, min_best: float) -> np.ndarray:
+    """2 where `fit` reaches _TIER_SHARE of the best fit, 1 where it is positive, 0 otherwise;
+    all 0 when the best fit is below `min_best` or not positive."""
     best = float(fit.max()) if len(fit) else 0.0
-    if best < 0.3:
-        return np.zeros(len(comp))
+    if best < min_best or best <= 0.0:
+        return np.zeros(len(fit))
     return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0))
 
 
-def _kind_fit(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
-    return comp[:, _LABEL] if q.named else comp[:, _AFFORD] if q.afford else np.zeros(len(comp))
+def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
+    """Tiers of the asked-for kind: the named category, or with no category the objects that
+    serve the function asked for; all 0 when the query asks for no kind."""
+    fit = comp[:, _LABEL] if q.named else comp[:, _AFFORD] if q.afford else np.zeros(len(comp))
+    return _tiers(fit, 0.3)
 
 
 def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarray:
@@ -213,8 +214,7 @@ def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
         fn = np.maximum(comp[:, _LABEL], comp[:, _KIN])
     else:
         fn = comp[:, _TEXT] + comp[:, _EMB]
-    best = float(fn.max()) if len(fn) else 0.0
-    tier = np.where(fn >= _TIER_SHARE * best, 2.0, np.where(fn > 0, 1.0, 0.0)) if best > 0 else np.zeros(len(fn))
+    tier = _tiers(fn, 0.0)
     details = comp[:, _ROOM] + comp[:, _DESC] + 0.3 * comp[:, _TEXT] + 0.3 * comp[:, _EMB]
     score = _SECOND * tier + details + 0.1 * fn + 0.1 * comp[:, _LABEL]
     return score, (fn + details > 1e-9)
