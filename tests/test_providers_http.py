@@ -192,9 +192,9 @@ async def test_rejected_response_format_falls_back_to_prompted_json():
         second = await model.acomplete(USER, opts)
         await model.aclose()
     assert first.text == second.text == "echo: where is the mug?"
-    assert [("response_format" in r.body, r.status) for r in server.requests] == [
-        (True, 400), (False, 200), (False, 200)]
-    assert model.structured_output is False and model.retries == 0
+    assert [(r.body.get("response_format", {}).get("type"), r.status) for r in server.requests] == [
+        ("json_schema", 400), ("json_object", 400), (None, 200), (None, 200)]
+    assert model.dialect == "prompt" and model.retries == 0
 
 
 async def test_400_without_response_format_is_not_retried():
@@ -203,17 +203,18 @@ async def test_400_without_response_format_is_not_retried():
         with pytest.raises(ProviderError, match="HTTP 400"):
             await model.acomplete(USER, ChatOptions(json_schema={"type": "object"}))
         await model.aclose()
-    assert server.request_count == 1 and model.structured_output is True
+    assert server.request_count == 1 and model.dialect == "json_schema"
 
 
-async def test_connection_refused_is_retried_then_reported():
+async def test_connection_refused_is_reported_at_once():
     with LoopbackServer(FunctionModel(echo)) as server:
         url = server.base_url
-    model = OpenAICompatModel("m", base_url=url, timeout=1.0, max_retries=2, backoff_s=0.001)
-    with pytest.raises(ProviderError, match="connection failed") as info:
+    model = OpenAICompatModel("m", base_url=url, timeout=1.0, max_retries=2, backoff_s=1.0)
+    with pytest.raises(ProviderError, match="connection failed.*is the server running") as info:
         await model.acomplete(USER)
     await model.aclose()
-    assert info.value.retryable and model.retries == 2 and url in str(info.value)
+    assert not info.value.retryable and model.retries == 0 and model.failures == 1
+    assert url in str(info.value)
 
 
 async def test_concurrency_limit_is_honoured():

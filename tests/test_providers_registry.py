@@ -66,7 +66,7 @@ def test_api_key_env_must_be_set(monkeypatch):
 
 def test_ollama_defaults():
     model = get_model("ollama:llama3.1")
-    assert model.endpoint == "http://localhost:11434/v1/chat/completions"
+    assert model.endpoint == "http://localhost:11434/api/chat"
     assert model.name == "ollama:llama3.1" and not model.capabilities.vision
 
 

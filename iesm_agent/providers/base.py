@@ -99,5 +99,16 @@ class Model(ABC):
         """What, besides messages and options, determines this model's replies (for cache keys)."""
         return {"model": self.name}
 
+    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
+        """Tokens a prompt may take (context window less room for the reply), None when there
+        is no known limit (the default)."""
+        return None
+
+    def estimate_tokens(self, messages: list[Message]) -> int:
+        """Tokens `messages` will take (an estimate, rounded up, for `aprompt_limit`)."""
+        from .endpoint import estimate_tokens  # endpoint imports this module
+
+        return estimate_tokens(messages)
+
     async def aclose(self) -> None:
         """Release connections (the model stays usable and reconnects lazily); a no-op by default."""

@@ -104,6 +104,12 @@ class CachedModel(Model):
     def cache_identity(self) -> dict[str, Any]:
         return self.inner.cache_identity()
 
+    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
+        return await self.inner.aprompt_limit(options)
+
+    def estimate_tokens(self, messages: list[Message]) -> int:
+        return self.inner.estimate_tokens(messages)
+
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
         options = options or ChatOptions()
         started = time.perf_counter()

@@ -11,6 +11,11 @@ For tests and benchmarks of HTTP clients and of everything built on them::
 Each request takes the next fault from `faults` (a list, consumed in order; `None` = serve
 normally) or asks `faults(index, body)` when it is a callable. Requests run on their own
 threads, so concurrent requests overlap (`delay_s` is slept per request, outside any lock).
+
+`flavour` imitates a real server's structured-output dialect and context window (the table in
+docs/providers.md); `context_window` (tokens, counted as 4 characters + 4 per message) turns
+on its over-long-prompt behaviour: an error in that server's wording, or for `ollama` the
+silent cut of the prompt's start (`RequestRecord.truncated`).
 """
 
 from __future__ import annotations
@@ -26,6 +31,15 @@ from typing import Any, Callable, Iterable, Literal, Optional, Union, get_args
 from pydantic import ValidationError
 
 from .base import ChatOptions, ImagePart, Message, Model, TextPart
+
+Flavour = Literal["openai", "vllm", "lmstudio", "llama-cpp-python", "llama.cpp", "ollama"]
+#: response_format types each flavour accepts on /v1/chat/completions
+_ACCEPTS: dict[str, tuple[str, ...]] = {
+    "openai": ("json_schema", "json_object"), "vllm": ("json_schema", "json_object"),
+    "lmstudio": ("json_schema",), "llama-cpp-python": ("json_object",),
+    "llama.cpp": ("json_schema", "json_object"), "ollama": ("json_schema", "json_object")}
+#: Ollama's own default num_ctx when a request does not set one
+OLLAMA_DEFAULT_CTX = 2048
 
 FaultKind = Literal["slow", "status", "non_json", "no_choices", "no_content", "bad_reply",
                     "reject_response_format"]
@@ -98,6 +112,8 @@ class RequestRecord:
     body: Any
     fault: Optional[Fault]
     status: int = 0
+    prompt_tokens: int = 0
+    truncated: bool = False
     started: float = field(default_factory=time.perf_counter)
     finished: float = 0.0
 
@@ -106,13 +122,20 @@ class LoopbackServer:
     """Chat-completions server on 127.0.0.1 with an ephemeral port, run in a background thread.
 
     `base_url` (`http://127.0.0.1:<port>/v1`) is what clients use; `requests` logs every
-    request; `max_in_flight` is the most requests seen at once. Use as a context manager or
-    call `start()` / `close()`.
+    chat request; `probes` every other path asked (GET /v1/models, /props, POST /api/show);
+    `max_in_flight` is the most requests seen at once. Use as a context manager or call
+    `start()` / `close()`.
     """
 
-    def __init__(self, model: Model, *, delay_s: float = 0.0, faults: FaultSource | None = None):
+    def __init__(self, model: Model, *, delay_s: float = 0.0, faults: FaultSource | None = None,
+                 flavour: Flavour = "openai", context_window: int | None = None,
+                 model_context_length: int = 32768):
         self.model = model
         self.delay_s = float(delay_s)
+        self.flavour = flavour
+        self.context_window = context_window
+        self.model_context_length = model_context_length
+        self.probes: list[str] = []
         if callable(faults):
             self._fault_fn: Callable[[int, dict[str, Any]], Any] | None = faults
             self._fault_queue: deque[Any] = deque()
@@ -172,6 +195,28 @@ class LoopbackServer:
         return f"http://127.0.0.1:{self.port}/v1"
 
     @property
+    def root_url(self) -> str:
+        """The server root (Ollama's native API and llama.cpp's /props live here)."""
+        return f"http://127.0.0.1:{self.port}"
+
+    def info(self, path: str) -> tuple[int, bytes]:
+        """Answer a GET (or Ollama's POST /api/show) the way this flavour does."""
+        self.probes.append(path)
+        path = path.rstrip("/")
+        if path.endswith("/v1/models"):
+            entry: dict[str, Any] = {"id": "loopback", "object": "model"}
+            if self.flavour == "vllm" and self.context_window:
+                entry["max_model_len"] = self.context_window
+            return 200, _json({"object": "list", "data": [entry]})
+        if path == "/props" and self.flavour == "llama.cpp":
+            return 200, _json({"default_generation_settings": {"n_ctx": self.context_window or 4096}})
+        if path == "/api/show" and self.flavour == "ollama":
+            return 200, _json({"model_info": {"general.architecture": "gemma3",
+                                              "gemma3.context_length": self.model_context_length},
+                               "parameters": "stop \"<end_of_turn>\""})
+        return 404, _json({"error": {"message": f"no route {path}"}})
+
+    @property
     def request_count(self) -> int:
         return len(self.requests)
 
@@ -215,10 +260,18 @@ class LoopbackServer:
         if kind == "reject_response_format" and isinstance(body, dict) and "response_format" in body:
             return 400, {}, _json({"error": {"message": "response_format is not supported by "
                                              "this server", "param": "response_format"}})
+        native = record.path.rstrip("/") == "/api/chat"
+        rejected = None if native else self._rejection(body)
+        if rejected is not None:
+            return rejected
         try:
-            messages, options = _parse_request(body)
+            messages, options = (_parse_ollama if native else _parse_request)(body)
         except (ValueError, ValidationError) as exc:
             return 400, {}, _json({"error": {"message": f"bad request: {exc}"}})
+        record.prompt_tokens = count_tokens(messages)
+        too_long = self._context(record, messages, body if native else None)
+        if too_long is not None:
+            return too_long
         if kind == "bad_reply":
             text, usage = fault.text, {"prompt_tokens": 0, "completion_tokens": 0}
         else:
@@ -227,13 +280,71 @@ class LoopbackServer:
             except Exception as exc:  # the served model failed: a server answers 500
                 return 500, {}, _json({"error": {"message": f"model failed: {exc}"}})
             text, usage = completion.text, completion.usage.model_dump()
+        usage["prompt_tokens"] = usage["prompt_tokens"] or record.prompt_tokens
         content = None if kind == "no_content" else text
+        if native:
+            return 200, {}, _json({"model": body.get("model"), "created_at": "2026-01-01T00:00:00Z",
+                                   "message": {"role": "assistant", "content": content},
+                                   "done": True, "done_reason": "stop",
+                                   "prompt_eval_count": usage["prompt_tokens"],
+                                   "eval_count": usage["completion_tokens"]})
         return 200, {}, _json({
             "id": f"chatcmpl-{record.index}", "object": "chat.completion",
             "created": int(time.time()), "model": body.get("model", "loopback"),
             "choices": [{"index": 0, "finish_reason": "stop",
                          "message": {"role": "assistant", "content": content}}],
             "usage": {**usage, "total_tokens": sum(usage.values())}})
+
+
+    def _rejection(self, body: Any) -> tuple[int, dict[str, str], bytes] | None:
+        """This flavour's answer to a response_format type it does not take (None if taken)."""
+        fmt = body.get("response_format") if isinstance(body, dict) else None
+        kind = fmt.get("type") if isinstance(fmt, dict) else None
+        if kind in (None, "text") or kind in _ACCEPTS[self.flavour]:
+            return None
+        if self.flavour == "llama-cpp-python":  # its pydantic validation error, as HTTP 500
+            return 500, {}, _json({"error": {"message": (
+                "1 validation error for CreateChatCompletionRequest\nresponse_format.type\n  "
+                f"Input should be 'text' or 'json_object' [type=literal_error, input_value='{kind}']"),
+                "type": "internal_server_error"}})
+        return 400, {}, _json({"error": {"message": (
+            f"'response_format.type' must be one of {list(_ACCEPTS[self.flavour])}, got {kind!r}")}})
+
+    def _context(self, record: RequestRecord, messages: list[Message],
+                 native: dict[str, Any] | None) -> tuple[int, dict[str, str], bytes] | None:
+        """A prompt over the window: this flavour's error, or for Ollama's native API the
+        silent cut of the prompt's start (`messages` edited in place, `record.truncated`)."""
+        tokens = record.prompt_tokens
+        if native is not None:
+            options = native.get("options") if isinstance(native.get("options"), dict) else {}
+            window = int(options.get("num_ctx") or OLLAMA_DEFAULT_CTX)
+            if tokens > window:
+                record.truncated = True
+                last = messages[-1]
+                keep = max(0, len(last.text()) - 4 * (tokens - window))
+                messages[-1] = Message(role=last.role, content=last.text()[-keep:] if keep else "")
+            return None
+        window = self.context_window
+        if window is None or tokens <= window:
+            return None
+        if self.flavour == "llama-cpp-python":
+            message = f"Requested tokens ({tokens}) exceed context window of {window}"
+            return 400, {}, _json({"error": {"message": message, "type": "invalid_request_error",
+                                             "code": "context_length_exceeded"}})
+        if self.flavour == "llama.cpp":
+            return 400, {}, _json({"error": {
+                "code": 400, "message": "the request exceeds the available context size, try "
+                "increasing it", "type": "exceed_context_size_error",
+                "n_prompt_tokens": tokens, "n_ctx": window}})
+        return 400, {}, _json({"error": {"message": (
+            f"This model's maximum context length is {window} tokens. However, you requested "
+            f"{tokens} tokens ({tokens} in the messages, 0 in the completion)."),
+            "type": "BadRequestError", "code": 400}})
+
+
+def count_tokens(messages: list[Message]) -> int:
+    """The loopback server's token count: 4 characters a token plus 4 per message."""
+    return sum(-(-len(m.text()) // 4) + 4 for m in messages)
 
 
 class _Handler(BaseHTTPRequestHandler):
@@ -245,16 +356,14 @@ class _Handler(BaseHTTPRequestHandler):
         """Silence the default per-request stderr log (the owner keeps `requests`)."""
 
     def do_GET(self) -> None:  # noqa: N802 - stdlib naming
-        if self.path.rstrip("/").endswith("/models"):
-            self._send(200, {}, _json({"object": "list", "data": [{"id": "loopback",
-                                                                   "object": "model"}]}))
-        else:
-            self._send(404, {}, _json({"error": {"message": f"no route {self.path}"}}))
+        self._send(*_with_headers(self.owner.info(self.path)))
 
     def do_POST(self) -> None:  # noqa: N802 - stdlib naming
         raw = self.rfile.read(int(self.headers.get("Content-Length") or 0))
-        if not self.path.rstrip("/").endswith("/chat/completions"):
-            self._send(404, {}, _json({"error": {"message": f"no route {self.path}"}}))
+        path = self.path.rstrip("/")
+        native = self.owner.flavour == "ollama" and path == "/api/chat"
+        if not (path.endswith("/chat/completions") or native):
+            self._send(*_with_headers(self.owner.info(path)))
             return
         try:
             body: Any = json.loads(raw)
@@ -289,6 +398,10 @@ def _json(data: Any) -> bytes:
     return json.dumps(data).encode()
 
 
+def _with_headers(answer: tuple[int, bytes]) -> tuple[int, dict[str, str], bytes]:
+    return answer[0], {}, answer[1]
+
+
 def _parse_request(body: Any) -> tuple[list[Message], ChatOptions]:
     """Chat-completions request JSON -> messages and options (raises ValueError if malformed)."""
     if not isinstance(body, dict) or not isinstance(body.get("messages"), list):
@@ -305,10 +418,31 @@ def _parse_request(body: Any) -> tuple[list[Message], ChatOptions]:
     if isinstance(fmt, dict) and fmt.get("type") == "json_schema":
         spec = fmt.get("json_schema")
         schema = spec.get("schema") if isinstance(spec, dict) else None
+    elif isinstance(fmt, dict) and fmt.get("type") == "json_object":
+        schema = fmt.get("schema") if isinstance(fmt.get("schema"), dict) else {"type": "object"}
     options = ChatOptions(temperature=body.get("temperature", 0.0),
                           max_tokens=body.get("max_tokens"), seed=body.get("seed"),
                           json_schema=schema)
     return messages, options
+
+
+def _parse_ollama(body: Any) -> tuple[list[Message], ChatOptions]:
+    """Ollama /api/chat request JSON -> messages and options (`format` a schema or "json")."""
+    if not isinstance(body, dict) or not isinstance(body.get("messages"), list):
+        raise ValueError("body must be a JSON object with a 'messages' list")
+    messages = []
+    for raw in body["messages"]:
+        if not isinstance(raw, dict):
+            raise ValueError("each message must be an object")
+        parts: list[TextPart | ImagePart] = [TextPart(text=str(raw.get("content", "")))]
+        parts += [ImagePart(data=str(i)) for i in raw.get("images") or []]
+        messages.append(Message(role=raw.get("role"), content=parts if len(parts) > 1 else parts[0].text))
+    fmt = body.get("format")
+    options = body.get("options") if isinstance(body.get("options"), dict) else {}
+    return messages, ChatOptions(temperature=options.get("temperature", 0.0),
+                                 max_tokens=options.get("num_predict"), seed=options.get("seed"),
+                                 json_schema=fmt if isinstance(fmt, dict) else
+                                 {"type": "object"} if fmt == "json" else None)
 
 
 def _parse_part(part: Any) -> TextPart | ImagePart:

@@ -5,10 +5,14 @@ Failure policy (each raises `ProviderError` naming the endpoint once retries are
 * retried with exponential backoff and full jitter (or the server's `Retry-After`, capped):
   HTTP 408, 409, 429, 5xx, connection errors, timeouts;
 * not retried: 401/403 (key), 404 (model or URL), other 4xx, a body that is not JSON,
-  JSON without `choices`, a choice without text content;
-* HTTP 400 that mentions `response_format` while structured output was requested: the request
-  is sent once more without it (the prompt already asks for JSON) and the instance stops sending
-  `response_format` from then on.
+  JSON without `choices`, a choice without text content, a refused connection (nothing listens
+  there: retrying cannot help);
+* structured output is negotiated (`endpoint.py`): an HTTP error naming `response_format` or the
+  schema moves the endpoint to the next dialect (json_schema -> json_object -> prompted JSON)
+  and the request is sent again at once, for every later call too;
+* a prompt that would not fit the context window is never sent (`ContextOverflowError`): the
+  window comes from the user (`context_window=`), the server (`/v1/models` `max_model_len`,
+  llama.cpp `/props`), or the server's own context error, which teaches it for later calls.
 """
 
 from __future__ import annotations
@@ -26,8 +30,14 @@ from pydantic import BaseModel, Field, ValidationError
 
 from ..errors import IesmError, ProviderError
 from .base import Capabilities, ChatOptions, Completion, ImagePart, Message, Model, Usage
+from .endpoint import (REPLY_RESERVE_TOKENS, ContextOverflowError, Dialect, context_error,
+                       facts_for, is_rejection, response_format)
 
 RETRYABLE_STATUS = frozenset({408, 409, 429, 500, 502, 503, 504, 520, 521, 522, 523, 524, 529})
+
+
+class DialectRejected(ProviderError):
+    """The server refused the structured-output dialect of the request (see `endpoint.py`)."""
 
 
 class _ReplyMessage(BaseModel):
@@ -57,7 +67,8 @@ class OpenAICompatModel(Model):
 
     `timeout` (s) bounds each read/write, `connect_timeout` (s, default min(timeout, 10)) the
     connection; `max_retries` retries follow the first attempt; at most `concurrency` requests
-    of this instance are in flight at once. Counters: `calls`, `retries`, `failures`,
+    of this instance are in flight at once. `context_window` (tokens) overrides what the server
+    says; `probe_window=False` skips asking it. Counters: `calls`, `retries`, `failures`,
     `prompt_tokens`, `completion_tokens`.
     """
 
@@ -65,7 +76,8 @@ class OpenAICompatModel(Model):
                  provider: str = "openai-compat", timeout: float = 60.0,
                  connect_timeout: float | None = None, max_retries: int = 4, concurrency: int = 8,
                  vision: bool = False, backoff_s: float = 0.5, backoff_max_s: float = 30.0,
-                 retry_after_max_s: float = 60.0, key_hint: str | None = None):
+                 retry_after_max_s: float = 60.0, key_hint: str | None = None,
+                 context_window: int | None = None, probe_window: bool = True):
         source = f"{provider}:{model}"
         if not model:
             raise IesmError("model name is empty", source)
@@ -77,6 +89,9 @@ class OpenAICompatModel(Model):
             raise IesmError(f"max_retries must be >= 0, got {max_retries}", source, "max_retries")
         if concurrency < 1:
             raise IesmError(f"concurrency must be >= 1, got {concurrency}", source, "concurrency")
+        if context_window is not None and context_window < 1:
+            raise IesmError(f"context_window must be >= 1 token, got {context_window}", source,
+                            "context_window")
         self.name = source
         self.model = model
         self.base_url = base_url.rstrip("/")
@@ -90,7 +105,10 @@ class OpenAICompatModel(Model):
         self.retry_after_max_s = float(retry_after_max_s)
         self._headers = {"Authorization": f"Bearer {api_key}"} if api_key else {}
         self._key_hint = key_hint or "the API key"
-        self.structured_output = True  # becomes False once the server rejects response_format
+        self.facts = facts_for(self.base_url, model)  # dialect and window, shared per endpoint
+        if context_window:
+            self.facts.learn_window(context_window, "setting")
+        self.probe_window = probe_window and not context_window
         self.calls = self.retries = self.failures = 0
         self.prompt_tokens = self.completion_tokens = 0
         self._client: httpx.AsyncClient | None = None
@@ -104,10 +122,63 @@ class OpenAICompatModel(Model):
     def cache_identity(self) -> dict[str, Any]:
         return {"provider": "openai-compat", "base_url": self.base_url, "model": self.model}
 
+    @property
+    def dialect(self) -> Dialect:
+        """The structured-output dialect this endpoint is spoken to in now."""
+        return self.facts.dialect
+
     def stats(self) -> dict[str, int]:
         """The counters as a dict (for traces and reports)."""
         return {"calls": self.calls, "retries": self.retries, "failures": self.failures,
                 "prompt_tokens": self.prompt_tokens, "completion_tokens": self.completion_tokens}
+
+    def estimate_tokens(self, messages: list[Message]) -> int:
+        return self.facts.estimate(messages)
+
+    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
+        """Tokens a prompt may take: the window (asked of the server once) less the reply's
+        `max_tokens` (`REPLY_RESERVE_TOKENS` when unset); None when the window is unknown."""
+        if self.probe_window and not self.facts.probed:
+            client, _ = self._session()
+            async with self.facts.lock():
+                if not self.facts.probed:
+                    await self._probe_window(client)
+                    self.facts.probed = True
+        if self.facts.window is None:
+            return None
+        reserve = (options.max_tokens if options and options.max_tokens else REPLY_RESERVE_TOKENS)
+        return max(self.facts.window - reserve, 0)
+
+    async def _probe_window(self, client: httpx.AsyncClient) -> None:
+        """Learn the window from vLLM's `/v1/models` (`max_model_len`) or llama.cpp's `/props`
+        (`default_generation_settings.n_ctx`); a server with neither leaves it unknown."""
+        models = await _get_json(client, f"{self.base_url}/models", self.connect_timeout)
+        data = models.get("data") if isinstance(models, dict) else None
+        entries = [e for e in data if isinstance(e, dict)] if isinstance(data, list) else []
+        mine = [e for e in entries if e.get("id") == self.model] or entries[:1] * (len(entries) == 1)
+        for entry in mine:
+            if isinstance(entry.get("max_model_len"), int):
+                self.facts.learn_window(entry["max_model_len"], "models")
+                return
+        root = re.sub(r"/v1$", "", self.base_url)
+        props = await _get_json(client, f"{root}/props", self.connect_timeout)
+        if isinstance(props, dict):
+            settings = props.get("default_generation_settings")
+            n_ctx = settings.get("n_ctx") if isinstance(settings, dict) else props.get("n_ctx")
+            if isinstance(n_ctx, int):
+                self.facts.learn_window(n_ctx, "props")
+
+    def _check_fits(self, messages: list[Message], options: ChatOptions, limit: int | None) -> None:
+        """Refuse, before sending, a prompt whose estimate exceeds `limit` tokens."""
+        if limit is None:
+            return
+        need = self.facts.estimate(messages)
+        if need > limit:
+            raise ContextOverflowError(
+                f"prompt of about {need} tokens does not fit the context window of "
+                f"{self.facts.window} tokens ({self.facts.window_source}) with "
+                f"{self.facts.window - limit} kept for the reply; not sent",
+                self.endpoint, prompt_tokens=need, window=self.facts.window or 0, estimated=True)
 
     async def aclose(self) -> None:
         """Close the HTTP client; the model stays usable (a new client is made on the next call).
@@ -123,25 +194,34 @@ class OpenAICompatModel(Model):
         started = time.perf_counter()
         client, semaphore = self._session()
         attempt = 0
-        while True:
-            structured = self.structured_output and options.json_schema is not None
-            try:
-                async with semaphore:
-                    reply = await self._post(client, self._body(messages, options, structured))
-                break
-            except ProviderError as exc:
-                if structured and exc.status == 400 and "response_format" in exc.message:
-                    self.structured_output = False
-                    continue
-                if not exc.retryable or attempt >= self.max_retries:
-                    self.failures += 1
-                    if attempt:
-                        exc.message += f" (gave up after {attempt + 1} attempts)"
+        try:
+            self._check_fits(messages, options, await self.aprompt_limit(options))
+            while True:
+                dialect = self.facts.dialect if options.json_schema is not None else "prompt"
+                try:
+                    async with semaphore:
+                        text, usage = await self._post(client, self._body(messages, options, dialect),
+                                                       structured=dialect != "prompt")
+                    break
+                except DialectRejected as exc:
+                    if self.facts.demote(dialect, exc.message):
+                        continue
                     raise
-                attempt += 1
-                self.retries += 1
-                await asyncio.sleep(self._backoff(attempt, exc.retry_after))
-        text, usage = reply
+                except ContextOverflowError as exc:
+                    self.facts.observe(messages, exc.prompt_tokens)
+                    raise
+                except ProviderError as exc:
+                    if not exc.retryable or attempt >= self.max_retries:
+                        if attempt:
+                            exc.message += f" (gave up after {attempt + 1} attempts)"
+                        raise
+                    attempt += 1
+                    self.retries += 1
+                    await asyncio.sleep(self._backoff(attempt, exc.retry_after))
+        except ProviderError:
+            self.failures += 1
+            raise
+        self.facts.observe(messages, usage.prompt_tokens)
         self.prompt_tokens += usage.prompt_tokens
         self.completion_tokens += usage.completion_tokens
         return Completion(text=text, model=self.name, usage=usage,
@@ -170,37 +250,52 @@ class OpenAICompatModel(Model):
             return max(0.0, min(retry_after, self.retry_after_max_s))
         return random.uniform(0.0, min(self.backoff_max_s, self.backoff_s * 2 ** (attempt - 1)))
 
-    def _body(self, messages: list[Message], options: ChatOptions, structured: bool) -> dict[str, Any]:
+    def _body(self, messages: list[Message], options: ChatOptions, dialect: Dialect) -> dict[str, Any]:
         body: dict[str, Any] = {"model": self.model, "messages": [_wire_message(m) for m in messages],
                                 "temperature": options.temperature}
         if options.max_tokens is not None:
             body["max_tokens"] = options.max_tokens
         if options.seed is not None:
             body["seed"] = options.seed
-        if structured:  # only ever True with a json_schema (see `acomplete`)
-            schema = options.json_schema
-            name = re.sub(r"[^A-Za-z0-9_-]", "_", str(schema.get("title") or "reply"))[:64]
-            body["response_format"] = {"type": "json_schema",
-                                       "json_schema": {"name": name, "schema": schema}}
+        fmt = response_format(dialect, options.json_schema) if options.json_schema else None
+        if fmt is not None:
+            body["response_format"] = fmt
         return body
 
-    async def _post(self, client: httpx.AsyncClient, body: dict[str, Any]) -> tuple[str, Usage]:
-        """One HTTP attempt: the reply text and usage, or a classified `ProviderError`."""
+    async def _post(self, client: httpx.AsyncClient, body: dict[str, Any],
+                    structured: bool) -> tuple[str, Usage]:
+        """One HTTP attempt (`structured`: the body asks for a structured-output dialect): the
+        reply text and usage, or a classified `ProviderError`."""
         try:
             response = await client.post(self.endpoint, json=body)
         except httpx.TimeoutException as exc:
             raise ProviderError(f"no reply within the {self.timeout:g} s timeout "
                                 f"({type(exc).__name__})", self.endpoint, retryable=True) from exc
+        except httpx.ConnectError as exc:
+            raise ProviderError(f"connection failed: {exc or type(exc).__name__} (is the server "
+                                f"running at {self.base_url}?)", self.endpoint) from exc
         except httpx.TransportError as exc:
             raise ProviderError(f"connection failed: {exc or type(exc).__name__}", self.endpoint,
                                 retryable=True) from exc
         if response.status_code >= 300:
-            raise self._status_error(response)
+            raise self._status_error(response, structured)
         return self._parse(response)
 
-    def _status_error(self, response: httpx.Response) -> ProviderError:
+    def _status_error(self, response: httpx.Response, structured: bool) -> ProviderError:
+        """The error for an HTTP status >= 300; a request with `response_format` that the body
+        blames on it is a `DialectRejected`, a context error a `ContextOverflowError`."""
         status = response.status_code
         detail = _error_detail(response)
+        overflow = context_error(response.text) if status >= 400 else None
+        if overflow is not None:
+            tokens, window = overflow
+            self.facts.learn_window(window, "error")
+            return ContextOverflowError(
+                f"HTTP {status}: the server's context window of {window} tokens is too small for "
+                f"this prompt of {tokens} tokens: {detail}", self.endpoint,
+                prompt_tokens=tokens, window=window, estimated=False, status=status)
+        if structured and is_rejection(status, response.text):
+            return DialectRejected(f"HTTP {status}: {detail}", self.endpoint, status=status)
         if status in (401, 403):
             message = f"HTTP {status}, access refused: {detail} (check {self._key_hint})"
         elif status == 404:
@@ -257,6 +352,15 @@ def _wire_message(message: Message) -> dict[str, Any]:
         else:
             parts.append({"type": "text", "text": part.text})
     return {"role": message.role, "content": parts}
+
+
+async def _get_json(client: httpx.AsyncClient, url: str, timeout: float) -> Any:
+    """GET `url` as JSON; None on any failure (probes are best effort)."""
+    try:
+        response = await client.get(url, timeout=timeout)
+        return response.json() if response.status_code == 200 else None
+    except (httpx.HTTPError, ValueError):
+        return None
 
 
 def _error_detail(response: httpx.Response) -> str:

@@ -3,8 +3,10 @@
 Every provider, built-in or not, is a factory `factory(model_name, **opts) -> Model` under a
 prefix. Plugins register through the entry point group `iesm_agent.providers`
 (name = prefix, object = factory) or at run time with `register_provider`. Factories receive
-`base_url`, `api_key_env`, `timeout`, `max_retries`, `concurrency` and any extra options;
-built-ins win over plugins of the same name.
+`base_url`, `api_key_env`, `timeout`, `max_retries`, `concurrency` and any extra options
+(`context_window`, tokens, for the HTTP providers); built-ins win over plugins of the same name.
+`ollama:` speaks Ollama's native API (`ollama.py`), `llamacpp:<file.gguf>` runs llama.cpp in
+this process (`llamacpp.py`).
 """
 
 from __future__ import annotations
@@ -21,8 +23,7 @@ Factory = Callable[..., Model]
 
 ENTRY_POINT_GROUP = "iesm_agent.providers"
 OPENAI_URL = "https://api.openai.com/v1"
-OLLAMA_URL = "http://localhost:11434/v1"
-_TRANSPORT = ("base_url", "api_key_env", "timeout", "max_retries", "concurrency")
+_TRANSPORT = ("base_url", "api_key_env", "timeout", "max_retries", "concurrency", "context_window")
 
 
 def _offline(model_name: str, **opts: Any) -> Model:
@@ -54,13 +55,17 @@ def _api_key(source: str, env: str | None, defaults: tuple[str, ...] = ()) -> tu
 
 def _http(provider: str, model_name: str, base_url: str, key: tuple[str | None, str | None],
           opts: dict[str, Any]) -> Model:
-    from .openai_compat import OpenAICompatModel  # deferred: httpx import costs ~50 ms
+    # deferred: httpx import costs ~50 ms
+    if provider == "ollama":
+        from .ollama import OllamaModel as cls
+    else:
+        from .openai_compat import OpenAICompatModel as cls
 
     opts.pop("api_key_env", None)
     opts.pop("base_url", None)
     try:
-        return OpenAICompatModel(model_name, base_url=base_url, api_key=key[0], provider=provider,
-                                 key_hint=key[1], **opts)
+        return cls(model_name, base_url=base_url, api_key=key[0], provider=provider,
+                   key_hint=key[1], **opts)
     except TypeError as exc:
         raise IesmError(f"bad option: {exc}", f"{provider}:{model_name}") from exc
 
@@ -85,7 +90,7 @@ def _openai(model_name: str, **opts: Any) -> Model:
 def _ollama(model_name: str, **opts: Any) -> Model:
     _require_name("ollama", model_name)
     key = _api_key(f"ollama:{model_name}", opts.get("api_key_env"))
-    return _http("ollama", model_name, opts.get("base_url") or OLLAMA_URL, key, opts)
+    return _http("ollama", model_name, opts.get("base_url") or "http://localhost:11434", key, opts)
 
 
 def _openai_compat(model_name: str, **opts: Any) -> Model:

@@ -13,6 +13,7 @@ from typing import Any
 
 from ..prompting import PromptLibrary
 from ..providers.base import ChatOptions, Message, Model
+from ..providers.endpoint import ContextOverflowError
 from .fusion import FusionResult
 from .replies import parse_ranking
 from .result import REPLY_CHARS, CallTrace
@@ -40,13 +41,19 @@ class Reply:
 @dataclass
 class Session:
     """Renders prompts and runs calls for one query; `record`/`reject` keep traces and failures
-    in a deterministic order (the caller's, not completion order)."""
+    in a deterministic order (the caller's, not completion order). A `dry_run` session sends
+    nothing: each call only adds the prompt's estimated tokens to `estimates` and fails (so a
+    method's every prompt is rendered without a reply). `overflowed`: a call was refused for
+    the model's context window."""
 
     model: Model
     prompts: PromptLibrary
     template_hashes: dict[str, str]
+    dry_run: bool = False
     calls: list[CallTrace] = field(default_factory=list)
     failures: list[str] = field(default_factory=list)
+    estimates: list[int] = field(default_factory=list)
+    overflowed: bool = False
 
     def render(self, template: str, **variables: Any) -> list[Message]:
         return self.prompts.render(template, **variables)
@@ -62,11 +69,16 @@ class Session:
                           prompt_sha256=prompt_sha256(messages))
         options = ChatOptions(temperature=0.0,
                               json_schema=schema if self.model.capabilities.json_schema else None)
+        if self.dry_run:
+            self.estimates.append(self.model.estimate_tokens(messages))
+            trace.error = "dry run"
+            return Reply(trace, None)
         started = time.perf_counter()
         try:
             completion = await self.model.acomplete(messages, options)
         except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
             trace.error = f"{type(exc).__name__}: {exc}"[:500]
+            self.overflowed |= isinstance(exc, ContextOverflowError)
             return Reply(trace, None)
         finally:
             trace.latency_ms = (time.perf_counter() - started) * 1000.0

@@ -56,6 +56,8 @@ class RetrievalResult(BaseModel):
     instances_considered: int = 0
     target: int | None = None
     candidate_recall: bool | None = None
+    #: candidates selected before the set was cut to fit the model's context window (None: not cut)
+    candidates_before_fit: int | None = None
     latency_ms: float = 0.0
     tokens: int = 0
     cache_hits: int = 0

@@ -92,10 +92,24 @@ class Retriever:
         return views
 
     async def aask(self, query: str, *, target: int | None = None) -> RetrievalResult:
-        """Retrieve the instance `query` refers to; `target` (ground truth) records candidate recall."""
+        """Retrieve the instance `query` refers to; `target` (ground truth) records candidate recall.
+        When the model's context window is known (or learnt from a refusal, then the query runs
+        once more) the candidate set is cut, best candidates kept, until every prompt fits."""
         started = time.perf_counter()
-        candidates = select_candidates(self.store, query, self.config.max_candidates, target)
-        session = Session(self.model, self.prompts, self._template_hashes)
+        selected = select_candidates(self.store, query, self.config.max_candidates, target)
+        candidates = await self._fit(query, selected, target)
+        outcome, session = await self._run(query, candidates)
+        if session.overflowed and len(candidates.ids) > 1:
+            refit = await self._fit(query, candidates, target)
+            if refit.ids != candidates.ids:
+                candidates = refit
+                outcome, session = await self._run(query, candidates)
+        before = len(selected.ids) if candidates.ids != selected.ids else None
+        return self._result(query, outcome, session, candidates, target, started, before)
+
+    async def _run(self, query: str, candidates: Candidates, dry_run: bool = False) -> tuple[Outcome, Session]:
+        """Run the method over `candidates` (`dry_run`: render its prompts, send nothing)."""
+        session = Session(self.model, self.prompts, self._template_hashes, dry_run=dry_run)
         views = self._candidate_views(candidates.ids, query)
         if self.method == "keyword":
             outcome = await run_keyword(session, self.store, query, self.config)
@@ -106,7 +120,26 @@ class Retriever:
         else:
             outcome = await run_mtefr(session, query, self.experts, candidates.ids, views, self.config,
                                       gate=self.method != "mtefr-uniform")
-        return self._result(query, outcome, session, candidates, target, started)
+        return outcome, session
+
+    async def _fit(self, query: str, candidates: Candidates, target: int | None) -> Candidates:
+        """The longest prefix of `candidates` whose prompts all fit the model's prompt limit
+        (estimated tokens); unchanged when the limit is unknown or it already fits. At least
+        one candidate is kept: a prompt that cannot fit even then is refused by the model."""
+        limit = await self.model.aprompt_limit()
+        ids = candidates.ids
+        if limit is None or self.method == "keyword":
+            return candidates
+        while len(ids) > 1:
+            _, dry = await self._run(query, Candidates(ids, candidates.considered), dry_run=True)
+            need = max(dry.estimates, default=0)
+            if need <= limit:
+                break
+            ids = ids[:max(1, min(len(ids) - 1, len(ids) * limit // need))]
+        if ids == candidates.ids:
+            return candidates
+        return Candidates(ids=ids, considered=candidates.considered,
+                          recall=None if target is None else target in ids)
 
     def ask(self, query: str, *, target: int | None = None) -> RetrievalResult:
         """Synchronous `aask`; from inside a running event loop it runs on a worker thread."""
@@ -126,7 +159,7 @@ class Retriever:
         return f"{view['label']} ({view['room']})" if view["room"] else view["label"]
 
     def _result(self, query: str, outcome: Outcome, session: Session, candidates: Candidates,
-                target: int | None, started: float) -> RetrievalResult:
+                target: int | None, started: float, before_fit: int | None) -> RetrievalResult:
         cfg = self.config
         fusion = outcome.fusion or fuse({}, {}, kappa=cfg.kappa, gamma=cfg.gamma, mu=cfg.mu)
         seen = set(fusion.ranking)
@@ -142,6 +175,7 @@ class Retriever:
             experts=outcome.experts, names={i: self._name(i) for i in sorted(mentioned)},
             calls=calls, failures=session.failures, candidate_ids=list(candidates.ids),
             instances_considered=candidates.considered, target=target, candidate_recall=candidates.recall,
+            candidates_before_fit=before_fit,
             latency_ms=(time.perf_counter() - started) * 1000.0,
             tokens=sum(c.prompt_tokens + c.completion_tokens for c in calls),
             cache_hits=sum(c.cached for c in calls))
