@@ -52,7 +52,7 @@ def test_window_learnt_from_a_refusal_reruns_the_query_cut(apartment_store):
     refused = [r for r in server.requests if r.status == 400]
     assert refused and all(r.prompt_tokens > window for r in refused)
     assert first.failures == [] and first.candidates_before_fit == n_all
-    assert second.failures == [] and second.candidate_ids == first.candidate_ids
+    assert second.failures == [] and second.candidates_before_fit == n_all
     assert server.request_count - sent_first == 6  # learnt: the second query is cut at once
     assert all(r.status == 200 for r in server.requests[sent_first:])
 
