@@ -36,7 +36,7 @@ def ask_command(
 
     store = open_store(map_ref)
     config = load_settings(None, {"retrieval.kappa": kappa} if kappa is not None else {}).retrieval
-    model = get_model(provider, base_url=base_url, cache=not no_cache and provider != "offline")
+    model = get_model(provider, base_url=base_url, cache=not no_cache)
     retriever = Retriever(store, provider=model, method=method, config=config, prompts_dir=prompts,
                           experts_dirs=experts_dir)
 
@@ -47,6 +47,11 @@ def ask_command(
             await retriever.aclose()
 
     result = asyncio.run(run())
+    if result.calls and result.failed_calls == len(result.calls):  # e.g. nothing listens there
+        from ..errors import IesmError
+
+        raise IesmError(f"all {len(result.calls)} model calls failed; the first: {result.calls[0].error}",
+                        provider)
     if as_json:
         print(result.model_dump_json(indent=2))
     else:

@@ -3,23 +3,13 @@
 from __future__ import annotations
 
 import asyncio
-import os
 import sys
 from pathlib import Path
 from typing import List, Optional
 
 import typer
 
-
-def _progress(total_label: str):
-    """A rich progress bar on stderr, disabled when stderr is not a terminal or under CI."""
-    from rich.console import Console
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
-
-    console = Console(stderr=True)
-    return Progress(TextColumn(total_label), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
-                    console=console, transient=True,
-                    disable=not console.is_terminal or bool(os.environ.get("CI")))
+from .progress import progress_bar
 
 
 def eval_command(
@@ -32,12 +22,17 @@ def eval_command(
                                            help="Extra expert spec directory (repeatable), for every variant."),
     out: Path = typer.Option(..., "--out", "-o", help="Run directory (results.jsonl, summary.json, report.md)."),
     concurrency: int = typer.Option(4, "--concurrency", "-j", help="Queries in flight at once."),
-    resume: bool = typer.Option(False, "--resume", help="Continue the run in OUT, skipping finished queries."),
+    resume: bool = typer.Option(False, "--resume", help="Continue the run in OUT, skipping finished queries "
+                                                        "(queries whose model calls failed are asked again)."),
+    max_failed_calls: int = typer.Option(0, "--max-failed-calls",
+                                         help="Model calls allowed to fail (no reply) before the exit status is 1."),
     fail_under: List[str] = typer.Option([], "--fail-under",
                                          help="METRIC=VALUE (osr, osr_type_mean, mrr, top3); exit 1 if any variant is below."),
     skip_invalid: bool = typer.Option(False, "--skip-invalid", help="Report and skip bad suite lines instead of stopping."),
-    no_cache: bool = typer.Option(False, "--no-cache", help="Do not use the response cache (on by default except offline)."),
+    no_cache: bool = typer.Option(False, "--no-cache", help="Do not use the response cache (on by default for models worth caching)."),
     base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
+    gt: List[str] = typer.Option([], "--gt", help="Frame directory with gt/ (simulator ground truth): N-SR on the "
+                                                  "map built from it; MAP=DIR when the suites have several maps."),
 ) -> None:
     """Evaluate retrieval methods on query suites: O-SR per query type, MRR, top-3, significance."""
     from ..evals.metrics import parse_thresholds, threshold_failures
@@ -45,11 +40,11 @@ def eval_command(
 
     thresholds = parse_thresholds(fail_under)
     variants = make_variants(split_methods(method), prompts)
-    cache = not no_cache and provider != "offline"
+    cache = not no_cache
     config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
-                         experts_dirs=experts_dir)
+                         experts_dirs=experts_dir, gt=gt)
 
-    with _progress("eval") as progress:
+    with progress_bar("eval") as progress:
         task = progress.add_task("eval", total=None)
         outcome = asyncio.run(run_eval(
             config, out, resume=resume, concurrency=concurrency,
@@ -64,7 +59,12 @@ def eval_command(
     failures = threshold_failures(summary, thresholds)
     for failure in failures:
         print(f"iesm: fail-under: {failure}", file=sys.stderr)
-    if failures:
+    failed_calls = summary["run"]["failed_calls"]
+    if failed_calls:
+        print(f"iesm: {failed_calls} model call(s) failed in {summary['run']['queries_with_failed_calls']} "
+              f"result(s) (allowed: {max_failed_calls}); see `failures` in {out / 'results.jsonl'}, "
+              "--resume asks those queries again", file=sys.stderr)
+    if failures or failed_calls > max_failed_calls:
         raise typer.Exit(1)
 
 
@@ -115,7 +115,7 @@ def gen_queries_command(
         model = get_model(provider, base_url=base_url, cache=True)
     if gt is not None:
         from ..errors import IesmError
-        from ..mapping.queries import generate_gt_suite
+        from ..evals.gt_queries import generate_gt_suite
 
         if len(maps) != 1:
             raise IesmError("--gt takes exactly one MAP (the map built from that frame directory)", "--gt")

@@ -36,6 +36,7 @@ class ResultRecord(BaseModel):
     tokens: int = 0
     cache_hits: int = 0
     failures: list[str] = []
+    failed_calls: int = 0  # model calls that got no reply (a resume asks this query again)
     candidate_recall: Optional[bool] = None
     nav_success: Optional[bool] = None  # reached within 1 m of the ground-truth instance (N-SR)
     path_length_m: Optional[float] = None

@@ -1,7 +1,8 @@
 """The eval runner: suites x variants (method [+ prompt dir]) with bounded concurrency.
 
 Each finished (query, variant) is appended to `RUN_DIR/results.jsonl` at once, so a killed run
-loses at most the queries in flight; `resume=True` skips the pairs already journaled. The run's
+loses at most the queries in flight; `resume=True` skips the pairs already journaled
+whose model calls all got a reply (a pair with failed calls is asked again). The run's
 configuration is kept in `RUN_DIR/run.json` and a resume under another configuration is refused.
 """
 
@@ -19,12 +20,12 @@ from pydantic import BaseModel, ConfigDict
 
 from ..errors import IesmError
 from ..providers.base import Model
+from ..retrieval.methods import is_method_name
 from .journal import ResultRecord, append_record, read_journal, repair_journal
 from .report import build_summary, write_outputs
 from .suite import MapRegistry, Suite, SuiteEntry, load_suites
 
 RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
-BASE_METHODS = ("mtefr", "mtefr-uniform", "spr", "keyword")
 
 
 class Variant(BaseModel):
@@ -48,6 +49,8 @@ class RunConfig(BaseModel):
     cache: bool = False
     skip_invalid: bool = False
     experts_dirs: list[str] = []
+    #: ground truth for N-SR: "DIR" (the suite's one map with starts) or "MAP=DIR"
+    gt: list[str] = []
 
 
 def split_methods(specs: list[str]) -> list[str]:
@@ -57,8 +60,7 @@ def split_methods(specs: list[str]) -> list[str]:
     for token in (t.strip() for spec in specs for t in spec.split(",")):
         if not token:
             continue
-        if token in BASE_METHODS or token.startswith("experts:") or not methods \
-                or not methods[-1].startswith("experts:"):
+        if is_method_name(token) or not methods or not methods[-1].startswith("experts:"):
             methods.append(token)
         else:
             methods[-1] += f",{token}"
@@ -83,7 +85,7 @@ def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Var
 
 def make_config(suite_paths: list[str | Path], variants: list[Variant], provider: str, *,
                 base_url: str | None = None, cache: bool = False, skip_invalid: bool = False,
-                experts_dirs: list[str | Path] = ()) -> RunConfig:
+                experts_dirs: list[str | Path] = (), gt: list[str] = ()) -> RunConfig:
     paths = [Path(p).resolve() for p in suite_paths]
     digest = hashlib.sha256()
     for path in paths:
@@ -93,7 +95,36 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
             raise IesmError(f"cannot read suite: {exc}", path) from exc
     return RunConfig(suites=[str(p) for p in paths], suites_sha256=digest.hexdigest(), variants=variants,
                      provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
-                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs])
+                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs], gt=[_resolve_gt(g) for g in gt])
+
+
+def _resolve_gt(spec: str) -> str:
+    """`--gt` as given, with its frame directory (and map file) made absolute."""
+    ref, sep, directory = spec.rpartition("=")
+    path = Path(directory)
+    if not (path / "gt").is_dir():
+        raise IesmError("not a frame directory with ground truth (no gt/)", path, "--gt")
+    if sep and Path(ref).exists():
+        ref = str(Path(ref).resolve())
+    return f"{ref}={path.resolve()}" if sep else str(path.resolve())
+
+
+def nav_ground_truth(specs: list[str], map_paths: set[Path]) -> dict[Path, Path]:
+    """Built map path -> frame directory whose ground truth judges N-SR there. A bare DIR belongs
+    to the suites' one map with robot starts (`map_paths`); MAP=DIR names the map."""
+    from ..store.refs import resolve_map_path
+
+    out: dict[Path, Path] = {}
+    for spec in specs:
+        ref, sep, directory = spec.rpartition("=")
+        if sep:
+            out[resolve_map_path(ref, Path.cwd())] = Path(directory)
+        elif len(map_paths) == 1:
+            out[next(iter(map_paths))] = Path(directory)
+        else:
+            raise IesmError(f"the suites have {len(map_paths)} maps with robot starts: say which one this "
+                            "ground truth belongs to with MAP=DIR", None, "--gt")
+    return out
 
 
 def prepare_run_dir(run_dir: Path, config: RunConfig, resume: bool) -> None:
@@ -148,7 +179,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     """Run (or resume) the evaluation described by `config` into `run_dir`. `model` overrides
     the provider named in the config (tests); `on_start(n_pending)` and `on_result` drive a
     progress display. The response cache (if on) lives in `$IESM_CACHE_DIR` or the user cache."""
-    from ..nav.agent import trials_for_map
+    from ..sim.ground_truth import GroundTruth
+    from .navigation import NavTrials
     from ..retrieval import Retriever
     from ..store.mapstore import MapStore
 
@@ -160,7 +192,10 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     prepare_run_dir(run_dir, config, resume)
     journal = run_dir / RESULTS
     repair_journal(journal)
-    previous = read_journal(journal)
+    # the last record of a key wins (a resumed query replaces its failed record); queries whose
+    # model calls failed are asked again
+    latest = {r.key: r for r in read_journal(journal)}
+    previous = [r for r in latest.values() if r.failed_calls == 0]
     done = {r.key for r in previous}
     jobs = [(e, v) for e in suite.entries for v in config.variants if (e.query.id, v.name) not in done]
     if on_start:
@@ -168,8 +203,9 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
     model = model or _build_model(config)
     stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
-    navs = {path: trials_for_map(registry.get(path))
-            for path in {e.map_path for e, _ in jobs if e.query.start is not None}}
+    with_starts = {e.map_path for e in suite.entries if e.query.start is not None}
+    navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory))
+            for path, directory in nav_ground_truth(config.gt, with_starts).items() if path in stores}
     retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
                                             experts_dirs=config.experts_dirs, cache=False)
                   for path, store in stores.items() for v in config.variants}
@@ -203,7 +239,7 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> Resu
     """One retrieval as a record; rank and ranking cover the ids the method scored (the rest of
     the candidate set follows in arbitrary candidate order and would inflate MRR). With `nav`
     (NavTrials) and a start, the simulated robot then goes to the retrieved instance (N-SR)."""
-    from ..nav.agent import record_fields
+    from .navigation import record_fields
 
     q = entry.query
     res = await retriever.aask(q.query, target=q.target)
@@ -212,7 +248,7 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> Resu
         id=q.id, variant=variant.name, method=variant.method, type=q.type, map=q.map, query=q.query,
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
         rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
-        tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures,
+        tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
         candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id))
 
 
@@ -228,6 +264,8 @@ def write_run_outputs(run_dir: str | Path, config: RunConfig, outcome: RunOutcom
         "run": {"provider": config.provider, "suites": [_shown(s) for s in config.suites], "queries": len(outcome.suite.entries),
                 "variants": [v.model_dump() for v in config.variants], "results": len(outcome.records),
                 "resumed_with": outcome.done_before, "new_results": outcome.new,
+                "failed_calls": sum(r.failed_calls for r in outcome.records),
+                "queries_with_failed_calls": sum(r.failed_calls > 0 for r in outcome.records),
                 "wall_s": round(outcome.wall_s, 3),
                 "results_per_s": round(outcome.new / outcome.wall_s, 2) if outcome.wall_s > 0 else None},
         "invalid_lines": [str(e) for e in outcome.suite.errors],

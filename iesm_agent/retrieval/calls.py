@@ -78,6 +78,7 @@ class Session:
             completion = await self.model.acomplete(messages, options)
         except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
             trace.error = f"{type(exc).__name__}: {exc}"[:500]
+            trace.failed = True
             self.overflowed |= isinstance(exc, ContextOverflowError)
             return Reply(trace, None)
         finally:

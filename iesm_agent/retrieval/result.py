@@ -24,6 +24,9 @@ class CallTrace(BaseModel):
     completion_tokens: int = 0
     cached: bool = False
     error: str | None = None
+    #: the call itself failed (no reply: endpoint error, timeout, refused prompt), as opposed to
+    #: a reply that could not be used
+    failed: bool = False
 
 
 class RetrievalResult(BaseModel):
@@ -61,6 +64,11 @@ class RetrievalResult(BaseModel):
     latency_ms: float = 0.0
     tokens: int = 0
     cache_hits: int = 0
+
+    @property
+    def failed_calls(self) -> int:
+        """Calls that got no reply at all (see `CallTrace.failed`)."""
+        return sum(c.failed for c in self.calls)
 
     def explain(self, top: int = 3) -> str:
         """Why this instance: gate weights, each expert's top-kappa, U/S/P of the `top` best."""
