@@ -21,7 +21,7 @@ from results_io import record  # noqa: E402
 
 from iesm_agent.nav import PlanningGrid  # noqa: E402
 from iesm_agent.rooms import segment_scene  # noqa: E402
-from iesm_agent.rooms.synthetic import grid_layout, noisy_labels  # noqa: E402
+from iesm_agent.sim.layouts import grid_layout, noisy_labels  # noqa: E402
 
 
 def median_time(fn, repeats: int) -> tuple[float, float]:

@@ -23,7 +23,7 @@ from iesm_agent.evals.storage import ASSUMPTIONS, storage_comparison  # noqa: E4
 from iesm_agent.frames import FrameSet  # noqa: E402
 from iesm_agent.mapping.build import build_map  # noqa: E402
 from iesm_agent.rooms import segment_rooms  # noqa: E402
-from iesm_agent.rooms.sim_labels import ViewpointLabels  # noqa: E402
+from iesm_agent.sim.room_labels import ViewpointLabels  # noqa: E402
 from iesm_agent.sim import generate_scene, render_frames  # noqa: E402
 from iesm_agent.store import save_map  # noqa: E402
 

@@ -95,7 +95,7 @@ def main() -> int:
         _run(["gen-queries", str(scene), "--gt", str(frames), "--types", TYPES, "--per-type", "10",
               "--seed", "0", "-o", str(suite)], "8. a query suite written from ground truth")
         shutil.rmtree(run_dir, ignore_errors=True)  # a fresh run each time
-        _run(["eval", str(suite), "--method", METHODS, "-o", str(run_dir)],
+        _run(["eval", str(suite), "--method", METHODS, "--gt", str(frames), "-o", str(run_dir)],
              "9. MTEFR against SPR, keyword and the ablations (Sec. 4.3)")
         shutil.copyfile(run_dir / "osr_by_type.png", out / "results.png")
         for query in _examples(suite):

@@ -1,7 +1,7 @@
 """RGB-D frame sets on disk: the layout `iesm sim` writes and `iesm build-map` reads.
 
 DIR/scene.json, DIR/intrinsics.json, DIR/frames/NNNNNN.{rgb.png, depth.png, pose.txt, seg.npz,
-inst.png}, DIR/gt/ (simulator ground truth). See README "Simulator and frame layout".
+inst.png}; see docs/frames.md. Simulator ground truth (DIR/gt/) is read by `sim.ground_truth`.
 Units: metres, world z up with the floor at z = 0; camera frame OpenCV (x right, y down, z forward);
 poses are camera-to-world 4x4; depth png is uint16 millimetres along the optical axis, 0 = none.
 PNG I/O uses OpenCV (the `mapping` extra). Every bad file gives an `IesmError` naming it.
@@ -10,17 +10,15 @@ PNG I/O uses OpenCV (the `mapping` extra). Every bad file gives an `IesmError` n
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator, Literal, Optional, Protocol
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field
 
 from .errors import IesmError
-from .store.model import GridSpec, InstanceGrid
+from .fileio import atomic_write, read_json_model, write_png, write_text
 
 FORMAT = "iesm-frames"
 VERSION = 1
@@ -106,38 +104,12 @@ def frame_stem(index: int) -> str:
 # ---------------------------------------------------------------------------------------- writing
 
 
-def _atomic_write(path: Path, write) -> None:
-    """Call `write(tmp_path)` on a temp file beside `path`, then rename it into place."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix or ".tmp")
-    os.close(fd)
-    try:
-        write(Path(tmp))
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
-def _write_text(path: Path, text: str) -> None:
-    _atomic_write(path, lambda p: p.write_text(text, encoding="utf-8"))
-
-
-def _write_png(path: Path, image: np.ndarray) -> None:
-    import cv2
-
-    def write(tmp: Path) -> None:
-        if not cv2.imwrite(str(tmp), image, [cv2.IMWRITE_PNG_COMPRESSION, 1]):
-            raise IesmError("could not write image", path)
-
-    _atomic_write(path, write)
-
-
 def write_frame_set(directory: str | Path, meta: SceneMeta, intrinsics: Intrinsics) -> None:
     """Create DIR/frames and write scene.json and intrinsics.json."""
     directory = Path(directory)
     (directory / "frames").mkdir(parents=True, exist_ok=True)
-    _write_text(directory / "scene.json", meta.model_dump_json(indent=1))
-    _write_text(directory / "intrinsics.json", intrinsics.model_dump_json(indent=1))
+    write_text(directory / "scene.json", meta.model_dump_json(indent=1))
+    write_text(directory / "intrinsics.json", intrinsics.model_dump_json(indent=1))
 
 
 def write_frame(directory: str | Path, frame: Frame) -> None:
@@ -146,37 +118,23 @@ def write_frame(directory: str | Path, frame: Frame) -> None:
 
     base = Path(directory) / "frames"
     stem = frame_stem(frame.index)
-    _write_png(base / f"{stem}.rgb.png", cv2.cvtColor(np.ascontiguousarray(frame.rgb, np.uint8), cv2.COLOR_RGB2BGR))
+    write_png(base / f"{stem}.rgb.png", cv2.cvtColor(np.ascontiguousarray(frame.rgb, np.uint8), cv2.COLOR_RGB2BGR))
     depth_mm = np.rint(np.clip(frame.depth, 0.0, MAX_DEPTH_M) * DEPTH_SCALE).astype(np.uint16)
-    _write_png(base / f"{stem}.depth.png", depth_mm)
-    _write_text(base / f"{stem}.pose.txt",
+    write_png(base / f"{stem}.depth.png", depth_mm)
+    write_text(base / f"{stem}.pose.txt",
                 "\n".join(" ".join(f"{v:.9g}" for v in row) for row in np.asarray(frame.pose)) + "\n")
     if frame.segmentation is not None:
         seg = frame.segmentation
-        _atomic_write(base / f"{stem}.seg.npz", lambda p: np.savez_compressed(
+        atomic_write(base / f"{stem}.seg.npz", lambda p: np.savez_compressed(
             p, masks=seg.masks.astype(bool), embeddings=seg.embeddings.astype(np.float32),
             scores=seg.scores.astype(np.float32)))
     if frame.instance_ids is not None:
         if frame.instance_ids.max(initial=0) > np.iinfo(np.uint16).max:
             raise IesmError("instance ids above 65535 do not fit a uint16 png", base / f"{stem}.inst.png")
-        _write_png(base / f"{stem}.inst.png", frame.instance_ids.astype(np.uint16))
+        write_png(base / f"{stem}.inst.png", frame.instance_ids.astype(np.uint16))
 
 
 # ---------------------------------------------------------------------------------------- reading
-
-
-def _load_json_model(path: Path, model: type[BaseModel]) -> BaseModel:
-    if not path.is_file():
-        raise IesmError("file is missing", path)
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise IesmError(f"not readable JSON ({exc})", path) from None
-    try:
-        return model.model_validate(data)
-    except ValidationError as exc:
-        err = exc.errors()[0]
-        raise IesmError(err["msg"], path, ".".join(str(p) for p in err["loc"]) or None) from None
 
 
 def _read_png(path: Path, color: bool) -> np.ndarray:
@@ -235,8 +193,8 @@ class FrameSet:
         directory = Path(directory)
         if not directory.is_dir():
             raise IesmError("not a frame directory", directory)
-        meta = _load_json_model(directory / "scene.json", SceneMeta)
-        intrinsics = _load_json_model(directory / "intrinsics.json", Intrinsics)
+        meta = read_json_model(directory / "scene.json", SceneMeta)
+        intrinsics = read_json_model(directory / "intrinsics.json", Intrinsics)
         return cls(directory, meta, intrinsics)  # type: ignore[arg-type]
 
     def __len__(self) -> int:
@@ -272,66 +230,3 @@ class FrameSet:
         return Frame(index=index, rgb=rgb, depth=depth_raw.astype(np.float32) / DEPTH_SCALE, pose=pose,
                      segmentation=segmentation, instance_ids=instance_ids)
 
-
-# ---------------------------------------------------------------------------------------- ground truth
-
-
-@dataclass
-class GroundTruth:
-    """Simulator ground truth in DIR/gt: `objects` (dicts in the `iesm import` object format plus
-    "structural" and "on"), `rooms_list` (dicts id/label/polygon), top-down `grid`, `rooms` (H, W)
-    int32 room id (-1 none), `occupancy` (H, W) bool, `cells` the 2.5D CSR map."""
-
-    scene_id: str
-    objects: list[dict]
-    rooms_list: list[dict]
-    grid: GridSpec
-    rooms: np.ndarray
-    occupancy: np.ndarray
-    cells: InstanceGrid
-
-    @classmethod
-    def load(cls, directory: str | Path) -> "GroundTruth":
-        gt = Path(directory) / "gt"
-        if not gt.is_dir():
-            raise IesmError("no ground truth (gt/ directory) in this frame directory", directory)
-        objects_path = gt / "objects.json"
-        if not objects_path.is_file():
-            raise IesmError("file is missing", objects_path)
-        try:
-            data = json.loads(objects_path.read_text(encoding="utf-8"))
-            scene_id, objects, rooms_list = str(data["scene_id"]), list(data["objects"]), list(data.get("rooms", []))
-        except (OSError, ValueError, KeyError, TypeError) as exc:
-            raise IesmError(f"not a readable object list ({exc})", objects_path) from None
-        grid = _load_json_model(gt / "grid.json", GridSpec)
-        hw = (grid.height, grid.width)
-        layers = {}
-        for name in ("rooms", "occupancy"):
-            path = gt / f"{name}.npy"
-            try:
-                layers[name] = np.load(path, allow_pickle=False)
-            except (OSError, ValueError) as exc:
-                raise IesmError(f"not a readable .npy ({exc})", path) from None
-            if layers[name].shape != hw:
-                raise IesmError(f"shape {layers[name].shape} differs from grid.json {hw}", path)
-        cells_path = gt / "cells.npz"
-        try:
-            with np.load(cells_path, allow_pickle=False) as z:
-                cells = InstanceGrid(cells=z["cells"], indptr=z["indptr"], ids=z["ids"], top=z["top"])
-        except (OSError, ValueError, KeyError) as exc:
-            raise IesmError(f"not a readable CSR map ({exc})", cells_path) from None
-        return cls(scene_id, objects, rooms_list, grid, layers["rooms"].astype(np.int32),
-                   layers["occupancy"].astype(bool), cells)  # type: ignore[arg-type]
-
-    def save(self, directory: str | Path) -> None:
-        """Write DIR/gt/{objects.json, grid.json, rooms.npy, occupancy.npy, cells.npz}."""
-        gt = Path(directory) / "gt"
-        gt.mkdir(parents=True, exist_ok=True)
-        _write_text(gt / "objects.json", json.dumps(
-            {"scene_id": self.scene_id, "rooms": self.rooms_list, "objects": self.objects}, indent=1))
-        _write_text(gt / "grid.json", self.grid.model_dump_json(indent=1))
-        _atomic_write(gt / "rooms.npy", lambda p: np.save(p, self.rooms.astype(np.int32)))
-        _atomic_write(gt / "occupancy.npy", lambda p: np.save(p, self.occupancy.astype(bool)))
-        c = self.cells
-        _atomic_write(gt / "cells.npz", lambda p: np.savez_compressed(
-            p, cells=c.cells, indptr=c.indptr, ids=c.ids, top=c.top))

@@ -189,7 +189,7 @@ def test_caption_cli_writes_the_map_and_refuses_bad_input(tiny, tmp_path, capsys
 
 
 def _ground_truth(scene):
-    from iesm_agent.frames import GroundTruth
+    from iesm_agent.sim.ground_truth import GroundTruth
 
     flat, ids, top = scene.occupancy.entries()
     cells = InstanceGrid.from_entries(flat, ids * 10, top)  # gt ids 10 (sofa) and 20 (lamp)
@@ -199,7 +199,7 @@ def _ground_truth(scene):
 
 
 def test_colour_scores_by_family_and_by_exact_name(tiny):
-    from iesm_agent.captioning.metrics import colour_scores, eval_section
+    from iesm_agent.evals.captions import colour_scores, eval_section
 
     frames_dir, scene = tiny
     gt = _ground_truth(scene)

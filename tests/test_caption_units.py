@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
-from iesm_agent.captioning.colours import ciede2000, colour_name, colour_table, masked_lab, name_lab, rgb_to_lab
+from iesm_agent.colours import ciede2000, colour_name, colour_table, masked_lab, name_lab, rgb_to_lab
 from iesm_agent.captioning.keyframes import crop_box, outlined_png, select_keyframes
 from iesm_agent.captioning.schema import CaptionReply, CaptionResult
 from iesm_agent.errors import IesmError

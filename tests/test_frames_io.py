@@ -10,8 +10,9 @@ import pytest
 
 from iesm_agent.embeddings import HASH_SPACE, text_vectors
 from iesm_agent.errors import IesmError
-from iesm_agent.frames import (Frame, FrameSet, GroundTruth, Intrinsics, SceneMeta, Segmentation,
+from iesm_agent.frames import (Frame, FrameSet, Intrinsics, SceneMeta, Segmentation,
                                write_frame, write_frame_set)
+from iesm_agent.sim.ground_truth import GroundTruth
 from iesm_agent.store.model import GridSpec, InstanceGrid
 
 H, W = 12, 16

@@ -11,8 +11,9 @@ import pytest
 
 from iesm_agent.cli import run
 from iesm_agent.embeddings import text_vectors
-from iesm_agent.frames import (Frame, GroundTruth, Intrinsics, SceneMeta, Segmentation, write_frame,
+from iesm_agent.frames import (Frame, Intrinsics, SceneMeta, Segmentation, write_frame,
                                write_frame_set)
+from iesm_agent.sim.ground_truth import GroundTruth
 from iesm_agent.store import load_map, save_map
 from iesm_agent.store.model import GridSpec, InstanceGrid
 
@@ -169,7 +170,7 @@ def test_queries_from_ground_truth_run_on_the_built_map(tiny, tmp_path, capsys):
 
 def test_translate_drops_unmatched_targets():
     from iesm_agent.evals.suite import SuiteQuery
-    from iesm_agent.mapping.queries import translate
+    from iesm_agent.evals.gt_queries import translate
 
     qs = [SuiteQuery(id="a", map="gt.json", query="find the cup", type="o", target=2, accept=[2, 5]),
           SuiteQuery(id="b", map="gt.json", query="find the bed", type="o", target=9, accept=[9])]

@@ -10,7 +10,7 @@ from iesm_agent.mapping.association import iou, phi_geo, phi_sem, select_matches
 from iesm_agent.mapping.categorize import categorize, category_scores
 from iesm_agent.mapping.cells import intersections, keys_of, union_max
 from iesm_agent.mapping.dictionary import InstanceDictionary
-from iesm_agent.mapping.metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, topk_curve
+from iesm_agent.evals.mapping_metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, topk_curve
 from iesm_agent.mapping.project import TopDownCandidates, project_candidates
 
 CFG = MappingConfig()

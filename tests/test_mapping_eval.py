@@ -7,10 +7,9 @@ import pytest
 
 from iesm_agent.config import MappingConfig
 from iesm_agent.frames import Frame, Intrinsics, Segmentation
-from iesm_agent.mapping.baseline2d import PointwiseMap2D
-from iesm_agent.mapping.evaluate import run_sections
-from iesm_agent.mapping.matching import cells_in_grid, greedy_pairs
-from iesm_agent.mapping.metrics import small_categories, topmost_labels
+from iesm_agent.evals.baseline2d import PointwiseMap2D
+from iesm_agent.evals.matching import cells_in_grid, greedy_pairs
+from iesm_agent.evals.mapping_metrics import small_categories, topmost_labels
 from iesm_agent.store.model import GridSpec
 
 
@@ -58,12 +57,3 @@ def test_small_categories_are_those_in_the_bottom_fifth():
     labels = ["cup", "cup", "table", "sofa", "book", "bed"]
     areas = np.array([4, 6, 300, 700, 8, 1300])
     assert small_categories(labels, areas, 0.2) == {"cup"}    # 20th percentile = 6
-
-
-def test_sections_of_absent_stages_are_skipped_and_present_ones_merged(tmp_path, monkeypatch):
-    (tmp_path / "iesm_fake_section.py").write_text(
-        "def eval_section(scene, gt, frames_dir):\n    return {'fake': [scene, gt, frames_dir.name]}\n")
-    monkeypatch.syspath_prepend(str(tmp_path))
-    out = run_sections("S", "G", tmp_path / "frames", sections=("iesm_agent.no_such_stage.metrics:eval_section",
-                                                                "iesm_fake_section:eval_section"))
-    assert out == {"fake": ["S", "G", "frames"]}

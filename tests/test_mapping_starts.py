@@ -3,8 +3,8 @@ of obstacles, seeded."""
 
 import numpy as np
 
-from iesm_agent.frames import GroundTruth
-from iesm_agent.mapping.queries import START_CLEARANCE_M, free_starts
+from iesm_agent.sim.ground_truth import GroundTruth
+from iesm_agent.evals.gt_queries import START_CLEARANCE_M, free_starts
 from iesm_agent.store import GridSpec, InstanceGrid
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from iesm_agent.cli import run
-from iesm_agent.rooms.synthetic import grid_layout, noisy_labels
+from iesm_agent.sim.layouts import grid_layout, noisy_labels
 from iesm_agent.store import load_map, save_map
 
 

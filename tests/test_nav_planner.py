@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 
 from iesm_agent.nav import PlanningGrid, plan_to_instance
-from iesm_agent.nav.agent import follow, footprint_distance
+from iesm_agent.evals.navigation import follow, footprint_distance
 from iesm_agent.nav.planner import line_of_sight, shorten
-from iesm_agent.rooms import ObstacleConfig
-from iesm_agent.rooms.synthetic import grid_layout
+from iesm_agent.nav import ObstacleConfig
+from iesm_agent.sim.layouts import grid_layout
 from iesm_agent.store.model import GridSpec, Instance, InstanceGrid, SceneMap
 
 

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from iesm_agent.cli import run
-from iesm_agent.frames import GroundTruth
-from iesm_agent.nav import NavTrials
-from iesm_agent.rooms.obstacles import obstacle_map
-from iesm_agent.rooms.synthetic import grid_layout
+from iesm_agent.evals.navigation import NavTrials
+from iesm_agent.nav.obstacles import obstacle_map
+from iesm_agent.sim.ground_truth import GroundTruth
+from iesm_agent.sim.layouts import grid_layout
 from iesm_agent.store import save_map
 from iesm_agent.store.model import InstanceGrid
 
@@ -71,7 +71,6 @@ def test_iesm_eval_reports_nsr(tmp_path, monkeypatch, capsys):
     scene = grid_layout(2, 1, labels=("bedroom", "kitchen")).scene
     frames = tmp_path / "frames"
     ground_truth(scene).save(frames)
-    scene.meta["frames_dir"] = str(frames)
     save_map(scene, tmp_path / "grid.iesm")
     bed = next(i.id for i in scene.instances if i.label == "bed")
     lines = [{"id": "q1", "map": "grid.iesm", "query": "the refrigerator", "type": "o", "target": fridge(scene),
@@ -80,7 +79,9 @@ def test_iesm_eval_reports_nsr(tmp_path, monkeypatch, capsys):
              {"id": "q3", "map": "grid.iesm", "query": "the bed", "type": "o", "target": bed}]
     suite = tmp_path / "suite.jsonl"
     suite.write_text("".join(json.dumps(line) + "\n" for line in lines))
-    assert run(["eval", str(suite), "-o", str(tmp_path / "run")]) == 0
+    assert run(["eval", str(suite), "-o", str(tmp_path / "no-gt")]) == 0   # no ground truth: no N-SR
+    assert all("nav_success" not in json.loads(line) for line in (tmp_path / "no-gt" / "results.jsonl").open())
+    assert run(["eval", str(suite), "--gt", str(frames), "-o", str(tmp_path / "run")]) == 0
     records = {json.loads(line)["id"]: json.loads(line) for line in (tmp_path / "run" / "results.jsonl").open()}
     assert all(r["correct"] for r in records.values())
     assert records["q1"]["nav_success"] is True and records["q1"]["path_length_m"] > 4

@@ -263,6 +263,7 @@ def test_candidate_pick_keeps_what_the_query_implies_by_function():
     """On a map larger than G, the lexical search alone would fill C with instances sharing the
     query's words; the concept fit keeps the keyboard ("something I can type on") in C."""
     from iesm_agent.retrieval.candidates import select_candidates
+    from iesm_agent.understanding import analyse_query
     from iesm_agent.store import MapStore
     from iesm_agent.store.model import GridSpec, Instance, SceneMap
 
@@ -273,8 +274,8 @@ def test_candidate_pick_keeps_what_the_query_implies_by_function():
                               instances=[*fillers, keyboard]))
     lexical_top = [i for i, _ in store.search("something I can type on", 100)]
     assert 500 not in lexical_top  # what the pick has to overcome
-    picked = select_candidates(store, "something I can type on", 100, target=500)
+    picked = select_candidates(store, "something I can type on", analyse_query("something I can type on"), 100, target=500)
     assert picked.recall is True and picked.ids[0] == 500 and len(picked.ids) == 100
     assert picked.considered == 131
-    plain = select_candidates(store, "a chair", 100, target=500)
+    plain = select_candidates(store, "a chair", analyse_query("a chair"), 100, target=500)
     assert plain.recall is False and len(plain.ids) == 100

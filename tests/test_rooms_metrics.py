@@ -5,9 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from iesm_agent.rooms import CellLabels, ObstacleConfig, inflate, obstacle_map
-from iesm_agent.rooms.metrics import baseline_scores, resample, score_room_map
-from iesm_agent.rooms.synthetic import grid_layout
+from iesm_agent.nav import ObstacleConfig, inflate, obstacle_map
+from iesm_agent.rooms import CellLabels
+from iesm_agent.evals.rooms import baseline_scores, resample, score_room_map
+from iesm_agent.sim.layouts import grid_layout
 from iesm_agent.store.model import GridSpec
 
 

@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 
 from iesm_agent.errors import IesmError
+from iesm_agent.nav import with_obstacles
 from iesm_agent.rooms import CellLabels, RoomConfig, segment_rooms, segment_scene
 from iesm_agent.rooms.boundaries import boundary_raster, merge_collinear
-from iesm_agent.rooms.metrics import baseline_scores, score_room_map
-from iesm_agent.rooms.synthetic import grid_layout, noisy_labels
+from iesm_agent.evals.rooms import baseline_scores, score_room_map
+from iesm_agent.sim.layouts import grid_layout, noisy_labels
 
 
 def scores(layout, seg):
@@ -79,7 +80,7 @@ def test_no_split_when_the_labels_do_not_cluster():
 
 def test_segment_rooms_writes_rooms_polygons_instance_rooms_and_obstacles():
     layout = grid_layout(2, 2)
-    scene = segment_rooms(layout.scene, noisy_labels(layout, 0.8))
+    scene = with_obstacles(segment_rooms(layout.scene, noisy_labels(layout, 0.8)))
     assert len(scene.rooms) == 4 and scene.room_map.dtype == np.int32
     for room in scene.rooms:
         xs, ys = np.array(room.polygon).T

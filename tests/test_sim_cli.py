@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from iesm_agent.cli import run
-from iesm_agent.frames import FrameSet, GroundTruth
+from iesm_agent.frames import FrameSet
+from iesm_agent.sim.ground_truth import GroundTruth
 from iesm_agent.sim.catalog import COLORS
 
 

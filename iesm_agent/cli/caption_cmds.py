@@ -46,7 +46,7 @@ def register(app: typer.Typer) -> None:
         """Caption every instance (keyframe crops -> captioner -> caption + tags) and write the map."""
         from ..captioning import caption_map, strip_captions
         from ..store import open_map, resolve_map_path, save_map
-        from .eval_cmds import _progress
+        from .progress import progress_bar
 
         output = output or map_path
         if not output.parent.resolve().is_dir():
@@ -63,7 +63,7 @@ def register(app: typer.Typer) -> None:
         if frames is None:
             raise IesmError("give the frame directory the map was built from", None, "--frames")
         captioner = _captioner(provider, base_url, cache, concurrency)
-        with _progress("caption") as bar:
+        with progress_bar("caption") as bar:
             tasks: dict[str, int] = {}
 
             def progress(stage: str, done: int, total: int) -> None:

@@ -25,7 +25,7 @@ def register(app: typer.Typer) -> None:
         from ..frames import FrameSet
         from ..mapping.build import build_map
         from ..store import save_map
-        from .eval_cmds import _progress
+        from .progress import progress_bar
 
         if not output.parent.resolve().is_dir():
             raise IesmError("output directory does not exist", output)
@@ -33,7 +33,7 @@ def register(app: typer.Typer) -> None:
             raise IesmError(f"cell size must be > 0, got {cell_size}", None, "--cell-size")
         frames = FrameSet.open(frames_dir)
         cfg = MappingConfig() if cell_size is None else MappingConfig(cell_size=cell_size)
-        with _progress("build-map") as progress:
+        with progress_bar("build-map") as progress:
             task = progress.add_task("build-map", total=len(frames))
             scene = build_map(frames, cfg, second_pass=not no_second_pass,
                               on_frame=lambda _i: progress.advance(task))
@@ -51,8 +51,8 @@ def register(app: typer.Typer) -> None:
         as_json: bool = typer.Option(False, "--json", help="print JSON"),
     ) -> None:
         """Mapping metrics (paper Sec. 4.1): AUC^top, Instance Diff, top-down Acc/mAcc/mIoU/F-mIoU, small objects."""
-        from ..frames import GroundTruth
-        from ..mapping.evaluate import evaluate_map
+        from ..sim.ground_truth import GroundTruth
+        from ..evals.mapping import evaluate_map
         from ..store import open_map
 
         scene = open_map(map_path)

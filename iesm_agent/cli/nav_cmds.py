@@ -53,6 +53,7 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="seed of the simulated labels"),
     ) -> None:
         """Segment rooms; store rooms, room map, each instance's room and the obstacle map."""
+        from ..nav import with_obstacles
         from ..rooms import RoomConfig, segment_rooms
         from ..store import save_map
         from ..store.refs import open_map
@@ -63,14 +64,12 @@ def register(app: typer.Typer) -> None:
             raise IesmError("output directory does not exist", output)
         scene = open_map(map_path)
         if frames is not None:
-            from ..rooms.sim_labels import ViewpointLabels
+            from ..sim.room_labels import ViewpointLabels
 
             labels = ViewpointLabels(frames, seed=seed).cell_labels(scene.grid)
         else:
             labels = _load_cell_labels(cell_labels, (scene.grid.height, scene.grid.width))
-        result = segment_rooms(scene, labels, RoomConfig(split=split))
-        if frames is not None:  # where `iesm eval` finds the ground truth for N-SR
-            result.meta["frames_dir"] = str(frames.resolve())
+        result = with_obstacles(segment_rooms(scene, labels, RoomConfig(split=split)))
         size = save_map(result, output)
         rooms = ", ".join(f"{r.label} ({int((result.room_map == r.id).sum() * scene.grid.cell_size ** 2)} m2)"
                           for r in result.rooms)
@@ -88,7 +87,7 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Plan a path to an instance: length in metres, reachable or not (exit 1 when not)."""
         from ..nav import PlanningGrid
-        from ..rooms import ObstacleConfig
+        from ..nav import ObstacleConfig
         from ..store.refs import open_map
 
         xy = _parse_xy(start)

@@ -12,6 +12,7 @@ from typing import Optional
 import typer
 
 from ..errors import IesmError
+from .progress import progress_bar
 
 
 def _check_out(out: Path, force: bool) -> None:
@@ -52,9 +53,6 @@ def register(app: typer.Typer) -> None:
         force: bool = typer.Option(False, "--force", help="replace a non-empty existing DIR"),
     ) -> None:
         """Generate a synthetic apartment: RGB-D frames, poses, masks + embeddings, ground truth."""
-        from rich.console import Console
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
-
         from ..sim import generate_scene, render_frames
         from ..sim.catalog import PROGRAMS
 
@@ -65,8 +63,7 @@ def register(app: typer.Typer) -> None:
         world = generate_scene(seed, size, open_plan)
         tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.resolve().parent))
         try:
-            with Progress(TextColumn("rendering"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
-                          console=Console(stderr=True), transient=True) as bar:
+            with progress_bar("rendering") as bar:
                 task = bar.add_task("frames", total=len(world.poses))
                 summary = render_frames(world, tmp, config, progress=lambda i: bar.advance(task))
             if out.exists():

@@ -1,8 +1,9 @@
-"""Colour of masked pixels, named in a perceptual space.
+"""Colours, in one place: sRGB -> CIELAB, colour names and colour families.
 
-Pixels are converted to CIELAB (D65; L in 0-100) with OpenCV, the object's colour is a
+Pixels are converted to CIELAB (D65; L in 0-100; numpy, no OpenCV needed), the object's colour is a
 lightness-robust median (see `masked_lab`), and its name is the nearest entry of the shipped
-XKCD colour-survey table (`data/colours.json`, CC0) under CIEDE2000.
+XKCD colour-survey table (`colours.json`, CC0) under CIEDE2000. The family of a colour
+name ("reddish brown" -> brown) is the lexicon's canonical colour of its last colour word.
 """
 
 from __future__ import annotations
@@ -20,6 +21,13 @@ LIGHTNESS_BAND = (50.0, 90.0)
 SHADING = np.linspace(0.5, 1.0, 11)
 #: CIEDE2000 units charged per unit of shading assumed (1 - s): at equal fit, less shading wins
 SHADING_COST = 8.0
+
+
+#: linear sRGB -> CIE XYZ (D65), and the D65 reference white
+_RGB_TO_XYZ = np.array([[0.412453, 0.357580, 0.180423], [0.212671, 0.715160, 0.072169],
+                        [0.019334, 0.119193, 0.950227]])
+_D65_WHITE = np.array([0.950456, 1.0, 1.088754])
+_LAB_EPSILON = (6 / 29) ** 3
 
 
 @dataclass(frozen=True)
@@ -42,18 +50,19 @@ def _shade(rgb: np.ndarray, factor: float) -> np.ndarray:
 
 def rgb_to_lab(rgb: np.ndarray) -> np.ndarray:
     """(..., 3) sRGB uint8 (or floats in 0-255) -> (..., 3) float64 CIELAB."""
-    import cv2
-
-    arr = np.asarray(rgb, np.float32)
-    flat = arr.reshape(-1, 1, 3) / np.float32(255.0)
-    lab = cv2.cvtColor(flat, cv2.COLOR_RGB2Lab)
-    return lab.reshape(arr.shape).astype(np.float64)
+    arr = np.asarray(rgb, np.float64)
+    c = arr.reshape(-1, 3) / 255.0
+    c = np.where(c > 0.04045, ((c + 0.055) / 1.055) ** 2.4, c / 12.92)
+    xyz = c @ _RGB_TO_XYZ.T / _D65_WHITE
+    f = np.where(xyz > _LAB_EPSILON, np.cbrt(xyz), xyz / (3 * (6 / 29) ** 2) + 4 / 29)
+    lab = np.stack([116 * f[:, 1] - 16, 500 * (f[:, 0] - f[:, 1]), 200 * (f[:, 1] - f[:, 2])], axis=1)
+    return lab.reshape(arr.shape)
 
 
 @lru_cache(maxsize=1)
 def colour_table() -> ColourTable:
     """The shipped colour table (read once)."""
-    data = json.loads(resources.files(__package__).joinpath("data/colours.json").read_text("utf-8"))
+    data = json.loads(resources.files(__package__).joinpath("colours.json").read_text("utf-8"))
     rows = data["colours"]
     rgb = np.array([[int(r["hex"][i:i + 2], 16) for i in (1, 3, 5)] for r in rows], np.float64)
     shaded = np.stack([rgb_to_lab(_shade(rgb, f)) for f in SHADING])
@@ -107,8 +116,11 @@ def name_lab(lab: np.ndarray, shading: bool = True) -> np.ndarray:
     return np.argmin(d.min(axis=-2), axis=-1)
 
 
-def colour_name(rgb: np.ndarray | tuple[int, int, int]) -> str:
-    """Nearest table name of one sRGB triple (0-255)."""
+def colour_name(rgb: np.ndarray | tuple[int, int, int] | list[int]) -> str:
+    """Nearest table name of one sRGB triple (0-255); ValueError outside that range."""
+    values = np.asarray(rgb, np.float64)
+    if values.shape != (3,) or not np.all((values >= 0) & (values <= 255)):
+        raise ValueError(f"RGB components must be three numbers in 0-255, got {list(np.ravel(values))}")
     return colour_table().names[int(name_lab(rgb_to_lab(np.asarray(rgb, np.float64).reshape(3))))]
 
 
@@ -131,3 +143,15 @@ def masked_lab(rgb: np.ndarray, mask: np.ndarray) -> tuple[np.ndarray, int] | No
     keep = (lab[:, 0] >= low) & (lab[:, 0] <= high)
     chosen = lab[keep] if keep.any() else lab
     return np.median(chosen, axis=0), int(len(chosen))
+
+
+def colour_family(name: str | None) -> str | None:
+    """The lexicon's canonical colour of the last colour word in `name` ("reddish brown" ->
+    "brown"), None when it names no colour."""
+    if not name:
+        return None
+    from ..lexicon import load_lexicon
+
+    lex = load_lexicon()
+    spans = [s for s in lex.scan([lex.lemma(t) for t in lex.tokens(name)]) if s.has("color")]
+    return spans[-1].values("color")[0] if spans else None

@@ -1,6 +1,6 @@
 """One-off generator of `colours.json` (run from a checkout with matplotlib installed):
 
-    python -m iesm_agent.captioning.data.generate_colours
+    python -m iesm_agent.colours.generate_colours
 
 Source: the XKCD colour survey names (Randall Munroe, 2010; public domain, CC0 1.0), as shipped
 in `matplotlib.colors.XKCD_COLORS`, whose order is the survey's rgb.txt order (least common name
@@ -26,7 +26,7 @@ EXTRA = ("ivory", "warm grey", "greyish brown", "medium grey", "steel grey",
 def main() -> None:
     from matplotlib.colors import XKCD_COLORS
 
-    from iesm_agent.captioning.metrics import colour_family as family
+    from iesm_agent.colours import colour_family as family
 
     by_popularity = [k.removeprefix("xkcd:") for k in reversed(list(XKCD_COLORS))]
     chosen: list[str] = []

@@ -13,8 +13,8 @@ import numpy as np
 
 from ..config import MappingConfig
 from ..frames import Frame, Intrinsics, Segmentation
-from .cells import run_starts
-from .project import mask_points
+from ..mapping.cells import run_starts
+from ..mapping.project import mask_points
 
 
 class PointwiseMap2D:

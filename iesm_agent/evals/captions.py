@@ -15,27 +15,14 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
+from ..colours import colour_family, colour_name
 from ..store.model import SceneMap
 
 #: an instance must be seen in at least this many frames to be scored
 MIN_FRAMES = 3
 
 
-def colour_family(name: Optional[str]) -> Optional[str]:
-    """The lexicon's canonical colour of the last colour word in `name` ("reddish brown" ->
-    "brown"), None when it names no colour."""
-    if not name:
-        return None
-    from ..lexicon import load_lexicon
-
-    lex = load_lexicon()
-    spans = [s for s in lex.scan([lex.lemma(t) for t in lex.tokens(name)]) if s.has("color")]
-    return spans[-1].values("color")[0] if spans else None
-
-
 def _gt_colour(obj: dict) -> Optional[str]:
-    from .colours import colour_name
-
     name = (obj.get("tags") or {}).get("color")
     if not name and obj.get("color_rgb") is not None:
         name = colour_name(obj["color_rgb"])
@@ -45,8 +32,8 @@ def _gt_colour(obj: dict) -> Optional[str]:
 def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES) -> dict:
     """{"colour_acc", "colour_name_acc", "n", "min_frames"} of the map's caption colours
     (accuracies None when no instance qualifies)."""
-    from ..mapping.matching import match_instances
-    from .views import frames_seen
+    from ..captioning.views import frames_seen
+    from .matching import match_instances
 
     matched = match_instances(scene, gt)
     seen = (frames_seen(scene.observations) if scene.observations is not None
@@ -73,8 +60,8 @@ def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:
     if source is None:
         if scene.observations is None or not Path(frames_dir).is_dir():
             return {"captions": {"colour_acc": None, "n": 0, "source": "none (map not captioned)"}}
-        from .offline import OfflineCaptioner
-        from .pipeline import caption_map
+        from ..captioning.offline import OfflineCaptioner
+        from ..captioning.pipeline import caption_map
 
         scene = caption_map(scene, frames_dir, OfflineCaptioner())
         source = "offline (run by eval-map)"

@@ -18,9 +18,9 @@ from typing import Sequence
 
 import numpy as np
 
-from ..evals.generate import GenerationResult, generate_suite
-from ..evals.suite import SuiteQuery, write_suite
-from ..frames import GroundTruth
+from .generate import GenerationResult, generate_suite
+from .suite import SuiteQuery, write_suite
+from ..sim.ground_truth import GroundTruth
 from ..store import open_map
 from ..store.importers.objects import ObjectSpec
 from ..store.refs import resolve_map_path

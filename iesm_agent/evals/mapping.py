@@ -16,7 +16,6 @@ a lamp on a nightstand, a picture on a wall, and the furniture they stand on whe
 
 from __future__ import annotations
 
-import importlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
@@ -24,17 +23,17 @@ from typing import Optional
 import numpy as np
 
 from ..config import MappingConfig
-from ..frames import FrameSet, GroundTruth
+from ..frames import FrameSet
 from ..store.model import GridSpec, InstanceGrid, SceneMap
-from .categorize import category_ranking, category_scores
-from .cells import intersections
+from ..mapping.build import category_vectors
+from ..mapping.categorize import category_ranking, category_scores
+from ..mapping.cells import intersections
+from ..mapping.project import pixel_cells
+from ..sim.ground_truth import GroundTruth
 from .matching import greedy_pairs, iou_pairs, keys_in_grid, masks_in_grid
-from .metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, small_categories, topmost_labels
-from .project import pixel_cells
+from .mapping_metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, small_categories, topmost_labels
 
 STACKED_SHARE = 0.5  # share of an instance's footprint another instance must cover to count as stacked
-#: optional sections other stages contribute: "module:function(scene, gt, frames_dir) -> dict"
-SECTIONS = ("iesm_agent.rooms.metrics:eval_section", "iesm_agent.captioning.metrics:eval_section")
 
 
 @dataclass
@@ -57,8 +56,6 @@ class EvalContext:
 
     @classmethod
     def create(cls, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None) -> "EvalContext":
-        from .build import category_vectors
-
         cfg = cfg or MappingConfig()
         frames = FrameSet.open(frames_dir)
         categories, e = category_vectors(frames)
@@ -215,24 +212,13 @@ def score(pred: Prediction, ctx: EvalContext) -> dict:
     return out
 
 
-def run_sections(scene: SceneMap, gt: GroundTruth, frames_dir: Path, sections=SECTIONS) -> dict:
-    """Results of the optional sections whose module exists (each returns a dict of keys)."""
-    out: dict = {}
-    for spec in sections:
-        module_name, func = spec.split(":")
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as exc:
-            if exc.name and module_name.startswith(exc.name):
-                continue  # that stage is not built (yet)
-            raise
-        out.update(getattr(module, func)(scene, gt, Path(frames_dir)))
-    return out
-
-
 def evaluate_map(scene: SceneMap, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None) -> dict:
-    """All mapping metrics of `scene` against `gt`, then the optional sections (rooms, captions)."""
+    """All mapping metrics of `scene` against `gt`, then the room and caption sections."""
+    from .captions import eval_section as caption_section
+    from .rooms import eval_section as room_section
+
     ctx = EvalContext.create(gt, frames_dir, cfg)
     result = score(prediction_from_map(scene, ctx), ctx)
-    result.update(run_sections(scene, gt, Path(frames_dir)))
+    for section in (room_section, caption_section):
+        result.update(section(scene, gt, Path(frames_dir)))
     return result

@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..store.model import GridSpec, InstanceGrid, SceneMap
-from .association import iou
-from .cells import intersections
+from ..mapping.association import iou
+from ..mapping.cells import intersections
 
 
 def cells_in_grid(flat: np.ndarray, src: GridSpec, dst: GridSpec) -> np.ndarray:
@@ -70,7 +70,7 @@ def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5) -> dict[int
 
 def keys_in_grid(keys: np.ndarray, cell_size: float, dst: GridSpec) -> np.ndarray:
     """Flat indices in `dst` of the centres of global cell `keys` (see `cells`), -1 outside."""
-    from .cells import rowcol_of
+    from ..mapping.cells import rowcol_of
 
     rows, cols = rowcol_of(keys)
     x, y = (cols + 0.5) * cell_size, (rows + 0.5) * cell_size

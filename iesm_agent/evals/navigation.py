@@ -9,10 +9,9 @@ from typing import Optional
 import numpy as np
 from pydantic import BaseModel, ConfigDict
 
-from ..rooms.config import ObstacleConfig
-from ..rooms.obstacles import inflate
+from ..nav.obstacles import ObstacleConfig, inflate
+from ..nav.planner import PlanningGrid
 from ..store.model import GridSpec, InstanceGrid, SceneMap
-from .planner import PlanningGrid
 
 
 class TrialOutcome(BaseModel):
@@ -85,7 +84,7 @@ class NavTrials:
     def for_map(cls, scene: SceneMap, gt, **kwargs) -> "NavTrials":
         """Trials for a map built from the frames whose ground truth is `gt`, ids matched by
         `mapping.matching.match_instances` (the paper's top-down IoU > 0.5)."""
-        from ..mapping.matching import match_instances
+        from .matching import match_instances
 
         return cls(scene, gt, {pred: gt_id for gt_id, pred in match_instances(scene, gt).items()}, **kwargs)
 
@@ -106,19 +105,6 @@ class NavTrials:
         return TrialOutcome(success=distance is not None and distance <= self.success_radius, status=plan.status,
                             final_xy=(round(float(final[0]), 4), round(float(final[1]), 4)),
                             distance_m=distance, path_length_m=plan.length_m, collided=collided)
-
-
-def trials_for_map(scene: SceneMap) -> Optional[NavTrials]:
-    """Trials for a built map whose `meta["frames_dir"]` (written by `iesm rooms --frames`) holds
-    simulator ground truth; None when it names none."""
-    from pathlib import Path
-
-    from ..frames import GroundTruth
-
-    frames_dir = scene.meta.get("frames_dir")
-    if not frames_dir or not (Path(frames_dir) / "gt").is_dir():
-        return None
-    return NavTrials.for_map(scene, GroundTruth.load(frames_dir))
 
 
 def record_fields(trials: Optional[NavTrials], start: Optional[tuple[float, float]],

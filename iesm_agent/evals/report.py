@@ -4,10 +4,11 @@ paired significance) and a PNG bar chart of O-SR by type per variant."""
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 from typing import Sequence
 
+from ..errors import IesmError
+from ..fileio import pyplot, save_figure, write_text
 from .journal import ResultRecord
 from .metrics import UNTYPED, ordered_types, summarize, type_title
 from .significance import compare_to_first
@@ -82,11 +83,8 @@ def render_markdown(summary: dict, plot: str | None) -> str:
 def plot_osr(summary: dict, path: Path) -> bool:
     """Grouped bar chart of O-SR by type per variant; False when matplotlib is missing."""
     try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+        plt = pyplot()
+    except IesmError:
         return False
     methods, types = summary["methods"], summary["types"]
     width = 0.8 / max(len(methods), 1)
@@ -99,19 +97,12 @@ def plot_osr(summary: dict, path: Path) -> bool:
     ax.set_ylim(0, 100)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path, dpi=80, tight=False)
     return True
-
-
-def _write_atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
 
 
 def write_outputs(run_dir: Path, summary: dict) -> None:
     """summary.json, report.md and the plot into `run_dir`."""
     plotted = bool(summary["types"]) and plot_osr(summary, run_dir / PLOT)
-    _write_atomic(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")
-    _write_atomic(run_dir / "report.md", render_markdown(summary, PLOT if plotted else None))
+    write_text(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")
+    write_text(run_dir / "report.md", render_markdown(summary, PLOT if plotted else None))

@@ -105,9 +105,9 @@ def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:
     """`iesm eval-map` section: {"rooms": metrics of the map's rooms (segmented now with the
     simulated per-cell labels when the map has none), "rooms_baseline": the per-cell labels alone};
     {} when the ground truth lists no rooms."""
-    from .labels import CellLabels
-    from .scene import segment_rooms
-    from .sim_labels import ViewpointLabels
+    from ..rooms.labels import CellLabels
+    from ..rooms.scene import segment_rooms
+    from ..sim.room_labels import ViewpointLabels
 
     if not gt.rooms_list:
         return {}

@@ -8,8 +8,6 @@ importers read, such as the paper's `scene_*_caption.json`), or the name of a sh
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Iterable, Optional
@@ -17,6 +15,7 @@ from typing import Annotated, Iterable, Optional
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from ..errors import IesmError
+from ..fileio import write_text
 from ..store.model import SceneMap
 from ..store.refs import open_map, resolve_map_path
 
@@ -142,12 +141,4 @@ def write_suite(queries: Iterable[SuiteQuery], path: str | Path) -> None:
     """Write `queries` as JSONL atomically (temporary file + rename)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            for query in queries:
-                handle.write(json.dumps(query.model_dump(mode="json", exclude_none=True)) + "\n")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_text(path, "".join(json.dumps(q.model_dump(mode="json", exclude_none=True)) + "\n" for q in queries))

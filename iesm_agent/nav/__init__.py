@@ -1,7 +1,7 @@
-"""Navigation on the obstacle map: `plan_to_instance(scene, instance_id, start_xy) -> PathResult`,
-and simulated trials for N-SR (`NavTrials`)."""
+"""The obstacle map and navigation on it: `plan_to_instance(scene, instance_id, start_xy) -> PathResult`."""
 
-from .agent import NavTrials, TrialOutcome
+from .obstacles import ObstacleConfig, inflate, obstacle_map, with_obstacles
 from .planner import PathResult, PlanningGrid, plan_to_instance
 
-__all__ = ["NavTrials", "PathResult", "PlanningGrid", "TrialOutcome", "plan_to_instance"]
+__all__ = ["ObstacleConfig", "PathResult", "PlanningGrid", "inflate", "obstacle_map", "plan_to_instance",
+           "with_obstacles"]

@@ -7,17 +7,25 @@ label is in the obstacle-category list; its footprint cells (from the CSR occupa
 from __future__ import annotations
 
 import numpy as np
+from pydantic import BaseModel, ConfigDict, Field
 
+from ..rooms.config import LARGE_FIXED_LABELS, STRUCTURAL_LABELS
 from ..store.model import SceneMap
-from .config import ObstacleConfig
+
+OBSTACLE_LABELS = STRUCTURAL_LABELS + LARGE_FIXED_LABELS + ("bed", "sofa", "couch", "table", "bathtub", "toilet",
+                                                            "sink", "stove", "oven", "washing machine", "piano")
 
 
-def cells_of(scene: SceneMap, instance_ids) -> np.ndarray:
-    """(H, W) bool: cells occupied by any of `instance_ids`."""
-    flat, ids, _ = scene.occupancy.entries()
-    mask = np.zeros(scene.grid.height * scene.grid.width, bool)
-    mask[flat[np.isin(ids, np.asarray(list(instance_ids), np.int64))]] = True
-    return mask.reshape(scene.grid.height, scene.grid.width)
+class ObstacleConfig(BaseModel):
+    """An instance blocks the robot if its mean height (m above the floor) lies in [h_min, h_max]
+    or its label is in `labels`; planning inflates obstacles by `robot_radius`."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    h_min: float = Field(0.05, ge=0)
+    h_max: float = Field(1.5, gt=0)
+    labels: tuple[str, ...] = OBSTACLE_LABELS
+    robot_radius: float = Field(0.2, ge=0)
 
 
 def obstacle_ids(scene: SceneMap, config: ObstacleConfig = ObstacleConfig()) -> list[int]:
@@ -30,7 +38,7 @@ def obstacle_ids(scene: SceneMap, config: ObstacleConfig = ObstacleConfig()) -> 
 
 def obstacle_map(scene: SceneMap, config: ObstacleConfig = ObstacleConfig()) -> np.ndarray:
     """(H, W) bool, true where an obstacle instance occupies the cell."""
-    return cells_of(scene, obstacle_ids(scene, config))
+    return scene.cells_of(obstacle_ids(scene, config))
 
 
 def inflate(obstacles: np.ndarray, radius_m: float, cell_size: float) -> np.ndarray:
@@ -43,3 +51,8 @@ def inflate(obstacles: np.ndarray, radius_m: float, cell_size: float) -> np.ndar
     free = np.ascontiguousarray(~obstacles, dtype=np.uint8)
     distance = cv2.distanceTransform(free, cv2.DIST_L2, cv2.DIST_MASK_PRECISE)
     return distance * cell_size <= radius_m
+
+
+def with_obstacles(scene: SceneMap, config: ObstacleConfig = ObstacleConfig()) -> SceneMap:
+    """A copy of `scene` carrying its obstacle map (written into the map by `iesm rooms`)."""
+    return scene.model_copy(update={"obstacles": obstacle_map(scene, config)})

@@ -9,8 +9,7 @@ from typing import Literal, Optional
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
-from ..rooms.config import ObstacleConfig
-from ..rooms.obstacles import cells_of, inflate, obstacle_map
+from .obstacles import ObstacleConfig, inflate, obstacle_map
 from ..store.model import GridSpec, SceneMap
 
 Status = Literal["ok", "unknown_instance", "start_outside_map", "start_in_obstacle", "no_free_space",
@@ -91,7 +90,7 @@ class PlanningGrid:
             if np.hypot(near[0] - row, near[1] - col) * self.grid.cell_size > self.config.robot_radius + self.grid.cell_size:
                 return fail("start_in_obstacle", f"start ({start[0]:.2f}, {start[1]:.2f}) is hemmed in by obstacles")
             row, col = int(near[0]), int(near[1])
-        target = cells_of(self.scene, [instance_id])
+        target = self.scene.cells_of([instance_id])
         if not target.any():
             return fail("unreachable", f"instance {instance_id} occupies no cell of the map")
         # only cells within max_goal_distance of the instance can be goals: work in that window

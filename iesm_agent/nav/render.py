@@ -2,26 +2,17 @@
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
-from ..errors import IesmError
-from ..rooms.obstacles import cells_of
+from ..fileio import pyplot, save_figure
 from .planner import PathResult, PlanningGrid
 
 
 def render_path(planning: PlanningGrid, result: PathResult, path: str | Path, dpi: int = 120) -> None:
     """Write the drawing of `result` on `planning`'s grid to `path` (PNG, atomically)."""
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError as exc:
-        raise IesmError("drawing needs matplotlib: pip install 'iesm-agent[plots]'", None, "--png") from exc
+    plt = pyplot("--png")
     scene, grid = planning.scene, planning.grid
     image = np.ones((grid.height, grid.width, 3))
     if scene.room_map is not None:
@@ -29,7 +20,7 @@ def render_path(planning: PlanningGrid, result: PathResult, path: str | Path, dp
     image[planning.blocked] = (0.82, 0.82, 0.82)
     image[planning.obstacles] = (0.35, 0.35, 0.35)
     if result.status != "unknown_instance":
-        image[cells_of(scene, [result.instance_id])] = (0.85, 0.1, 0.1)
+        image[scene.cells_of([result.instance_id])] = (0.85, 0.1, 0.1)
     extent = (grid.origin[0], grid.origin[0] + grid.width * grid.cell_size,
               grid.origin[1], grid.origin[1] + grid.height * grid.cell_size)
     fig, ax = plt.subplots(figsize=(8, max(3.0, 8 * grid.height / max(grid.width, 1))))
@@ -43,14 +34,4 @@ def render_path(planning: PlanningGrid, result: PathResult, path: str | Path, dp
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    finally:
-        plt.close(fig)
+    save_figure(fig, path, dpi)

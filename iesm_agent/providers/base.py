@@ -80,6 +80,9 @@ class Model(ABC):
     #: the string naming this model, e.g. "offline" or "openai:gpt-4o-mini"
     name: str = "model"
     capabilities: Capabilities = Capabilities()
+    #: whether a response cache pays off (False for models that answer locally faster than a
+    #: cache lookup, such as the offline model); `get_model` never wraps those in a cache
+    cacheable: bool = True
 
     @abstractmethod
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:

@@ -144,7 +144,7 @@ def get_model(spec: str | Model, *, base_url: str | None = None, api_key_env: st
     """The model named by `spec` (`prefix` or `prefix:model`; a `Model` passes through).
 
     `timeout` in seconds; `cache`: None/False none, True the default directory, a path that
-    directory (wraps the model in `CachedModel`). Unknown prefixes raise `IesmError` listing
+    directory (wraps the model in `CachedModel`; not for models that are not `cacheable`). Unknown prefixes raise `IesmError` listing
     the known ones.
     """
     if isinstance(spec, Model):
@@ -165,7 +165,7 @@ def get_model(spec: str | Model, *, base_url: str | None = None, api_key_env: st
         if not isinstance(model, Model):
             raise IesmError(f"provider {prefix!r} returned {type(model).__name__}, not a Model",
                             "model", spec)
-    if cache is None or cache is False:
+    if cache is None or cache is False or not model.cacheable:
         return model
     from .cache import CachedModel  # diskcache only when a cache is asked for
 

@@ -7,20 +7,22 @@ Both are expressed as a one-expert fusion, so their U scores are the rank scores
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..config import RetrievalConfig
 from ..store.mapstore import CANDIDATE_FIELDS
 from .calls import Outcome, Session
 from .fusion import fuse
-from .mtefr import Views
 from .replies import KEYWORD_SCHEMA, parse_keywords, ranking_schema
 
+if TYPE_CHECKING:
+    from .methods import CandidateViews
 
-async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], views: Views,
+
+async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], views: "CandidateViews",
                   config: RetrievalConfig) -> Outcome:
     """One call with every candidate field (`spr.j2`); its top-1 is the answer."""
-    messages = session.render("spr.j2", query=query, candidates=views(CANDIDATE_FIELDS), kappa=config.kappa)
+    messages = session.render("spr.j2", query=query, candidates=views.fields(CANDIDATE_FIELDS), kappa=config.kappa)
     reply = await session.call("spr", "spr.j2", messages, ranking_schema(config.kappa))
     ids = session.ranking(reply, frozenset(candidate_ids), config.kappa)
     rankings = {"spr": ids} if ids is not None else {}

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..lexicon import load_lexicon
-from ..understanding import analyse_query, label_concepts
+from ..understanding import QueryInfo, label_concepts
 
 #: alternative labels (the mapper's runner-up categories) count this much
 _ALT_WEIGHT = 0.5
@@ -42,19 +42,12 @@ def _denoted(label: str, alt_labels: tuple[str, ...]) -> tuple[tuple[str, float]
     return tuple(out)
 
 
-def _wanted(query: str) -> dict[str, float]:
+def _wanted(info: QueryInfo) -> dict[str, float]:
     """Categories the query names (weight 1) or implies by function (affordance weight)."""
-    info = analyse_query(query)
     wanted = dict(info.afford)
     for concept, weight in info.targets.items():
         wanted[concept] = max(wanted.get(concept, 0.0), weight)
     return wanted
-
-
-def concept_fit(query: str, label: str, alt_labels: tuple[str, ...] = ()) -> float:
-    """0..1: how well an instance labelled `label` (with `alt_labels`) is a category the query
-    names or implies by function."""
-    return _fit(_wanted(query), _denoted(label, tuple(alt_labels)))
 
 
 def _fit(wanted: dict[str, float], denoted: tuple[tuple[str, float], ...]) -> float:
@@ -78,8 +71,9 @@ class _LabelIndex:
 _INDEXES: "weakref.WeakKeyDictionary[Any, _LabelIndex]" = weakref.WeakKeyDictionary()
 
 
-def select_candidates(store: Any, query: str, max_candidates: int, target: int | None = None) -> Candidates:
-    """Pick at most `max_candidates` instance ids of `store` for `query`: by concept fit first,
+def select_candidates(store: Any, query: str, info: QueryInfo, max_candidates: int,
+                      target: int | None = None) -> Candidates:
+    """Pick at most `max_candidates` instance ids of `store` for `query` (read as `info`): by concept fit first,
     then by the store's search score, then by id."""
     instances = store.scene.instances
     if len(instances) <= max_candidates:
@@ -88,7 +82,7 @@ def select_candidates(store: Any, query: str, max_candidates: int, target: int |
         index = _INDEXES.get(store)
         if index is None:
             index = _INDEXES[store] = _LabelIndex(instances)
-        wanted = _wanted(query)
+        wanted = _wanted(info)
         group_fit = np.array([_fit(wanted, _denoted(*key)) if wanted else 0.0 for key in index.keys])
         order = np.lexsort((index.ids, -store.search_scores(query), -group_fit[index.group]))
         ids = tuple(int(i) for i in index.ids[order[:max_candidates]])
@@ -96,7 +90,7 @@ def select_candidates(store: Any, query: str, max_candidates: int, target: int |
                       recall=None if target is None else target in ids)
 
 
-def reference_ids(store: Any, query: str, exclude: tuple[int, ...], limit: int = 60) -> tuple[int, ...]:
+def reference_ids(store: Any, info: QueryInfo, exclude: tuple[int, ...], limit: int = 60) -> tuple[int, ...]:
     """Instances outside `exclude` (the candidates) whose category the query names anywhere,
     landmarks included ("the cup on the table": tables), best fit first, at most `limit`; empty
     when every instance is a candidate. Spatial prompts show them as reference objects."""
@@ -106,7 +100,7 @@ def reference_ids(store: Any, query: str, exclude: tuple[int, ...], limit: int =
     index = _INDEXES.get(store)
     if index is None:
         index = _INDEXES[store] = _LabelIndex(instances)
-    wanted = _wanted(query)
+    wanted = _wanted(info)
     if not wanted:
         return ()
     fit = np.array([_fit(wanted, _denoted(*key)) for key in index.keys])[index.group]

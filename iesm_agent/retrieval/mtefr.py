@@ -9,7 +9,8 @@ with `gate=False` (method `mtefr-uniform`) no gate is asked and every expert wei
 from __future__ import annotations
 
 import asyncio
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ..config import RetrievalConfig
 from .calls import Outcome, Reply, Session
@@ -17,15 +18,15 @@ from .experts import ExpertSpec
 from .fusion import fuse
 from .replies import GATE_SCHEMA, parse_gate, ranking_schema
 
-#: candidate views (dicts of the allowed fields) for a field set
-Views = Callable[[Sequence[str]], list[dict]]
+if TYPE_CHECKING:
+    from .methods import CandidateViews
 
 
-def _expert_call(session: Session, spec: ExpertSpec, query: str, views: Views, kappa: int, hint: str = ""):
-    references = getattr(views, "references", None)  # landmarks outside the candidates (spatial.j2)
+def _expert_call(session: Session, spec: ExpertSpec, query: str, views: "CandidateViews", kappa: int,
+                 hint: str = ""):
     messages = session.render(spec.template, query=query, focus=spec.focus, hint=hint,
-                              candidates=views(spec.fields), kappa=kappa,
-                              references=references(spec.fields) if references else [])
+                              candidates=views.fields(spec.fields), kappa=kappa,
+                              references=views.references(spec.fields))
     return session.call(spec.name, spec.template, messages, ranking_schema(kappa))
 
 
@@ -42,7 +43,7 @@ def _gate_weights(session: Session, reply: Reply, names: list[str]) -> tuple[dic
 
 
 async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], candidate_ids: Sequence[int],
-                    views: Views, config: RetrievalConfig, gate: bool = True) -> Outcome:
+                    views: "CandidateViews", config: RetrievalConfig, gate: bool = True) -> Outcome:
     """Gate + experts + fusion over `candidate_ids` (uniform weights without the gate when
     `gate` is False); model misbehaviour is recorded, never raised."""
     kappa, names = config.kappa, [s.name for s in specs]

@@ -1,4 +1,4 @@
-"""Parameters of room segmentation and of the obstacle map (metres unless stated)."""
+"""Parameters of room segmentation (metres unless stated)."""
 
 from __future__ import annotations
 
@@ -7,22 +7,6 @@ from pydantic import BaseModel, ConfigDict, Field
 STRUCTURAL_LABELS = ("wall", "door", "doorframe", "door frame", "doorway", "window", "pillar", "column", "railing")
 LARGE_FIXED_LABELS = ("wardrobe", "closet", "bookshelf", "bookcase", "shelf", "cabinet", "kitchen cabinet",
                       "refrigerator", "fridge", "counter", "kitchen counter", "kitchen island", "dresser")
-OBSTACLE_LABELS = STRUCTURAL_LABELS + LARGE_FIXED_LABELS + ("bed", "sofa", "couch", "table", "bathtub", "toilet",
-                                                            "sink", "stove", "oven", "washing machine", "piano")
-
-
-class ObstacleConfig(BaseModel):
-    """An instance blocks the robot if its mean height (m above the floor) lies in [h_min, h_max]
-    or its label is in `labels`; planning inflates obstacles by `robot_radius`."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    h_min: float = Field(0.05, ge=0)
-    h_max: float = Field(1.5, gt=0)
-    labels: tuple[str, ...] = OBSTACLE_LABELS
-    robot_radius: float = Field(0.2, ge=0)
-
-
 class RoomConfig(BaseModel):
     """Room segmentation (paper Sec. 3.2 plus the contextual open-plan split).
 
@@ -66,4 +50,3 @@ class RoomConfig(BaseModel):
     split_min_share: float = Field(0.1, ge=0, le=0.5)
     split_max_depth: int = Field(3, ge=0)
     object_vote_weight: float = Field(0.5, ge=0)
-    obstacles: ObstacleConfig = Field(default_factory=ObstacleConfig)

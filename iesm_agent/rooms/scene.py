@@ -1,5 +1,5 @@
 """Room segmentation of a built `SceneMap`: structural and known masks from its instances, rooms
-with polygons, each instance's room, and the obstacle map written back into the map."""
+with polygons and each instance's room written back into the map."""
 
 from __future__ import annotations
 
@@ -9,7 +9,6 @@ from ..errors import IesmError
 from ..store.model import Room, SceneMap
 from .config import RoomConfig
 from .labels import CellLabels, object_votes
-from .obstacles import cells_of, obstacle_map
 from .segment import RoomSegmentation, segment_room_map
 
 
@@ -22,7 +21,7 @@ def structural_masks(scene: SceneMap, config: RoomConfig = RoomConfig()) -> tupl
     walls = [inst.id for inst in scene.instances if inst.label.lower() in structural]
     furniture = [inst.id for inst in scene.instances
                  if inst.label.lower() in large and inst.footprint_cells >= min_cells]
-    return cells_of(scene, walls), cells_of(scene, furniture)
+    return scene.cells_of(walls), scene.cells_of(furniture)
 
 
 def room_polygon(mask: np.ndarray, scene: SceneMap) -> list[tuple[float, float]] | None:
@@ -70,8 +69,8 @@ def segment_scene(scene: SceneMap, cell_labels: CellLabels,
 
 
 def segment_rooms(scene: SceneMap, cell_labels: CellLabels, config: RoomConfig = RoomConfig()) -> SceneMap:
-    """A copy of `scene` with rooms (id, label, polygon), `room_map`, each instance's room, and the
-    obstacle map; `meta["room_segmentation"]` records the detector and the contextual splits."""
+    """A copy of `scene` with rooms (id, label, polygon), `room_map` and each instance's room;
+    `meta["room_segmentation"]` records the detector and the contextual splits."""
     seg = segment_scene(scene, cell_labels, config)
     rooms = [Room(id=i, label=label, polygon=room_polygon(seg.room_map == i, scene))
              for i, label in enumerate(seg.labels)]
@@ -82,5 +81,4 @@ def segment_rooms(scene: SceneMap, cell_labels: CellLabels, config: RoomConfig =
     note = f"{seg.boundaries.detector}; {seg.components} components, {seg.splits} contextual splits"
     meta = {**scene.meta, "room_segmentation": "; ".join([note, *seg.notes])}
     return scene.model_copy(update={"rooms": rooms, "room_map": seg.room_map.astype(np.int32),
-                                    "obstacles": obstacle_map(scene, config.obstacles),
                                     "instances": instances, "meta": meta})

@@ -90,7 +90,7 @@ class MapService:
         if key in self._retrievers:
             return self._retrievers[key]
         # remote answers go to the response cache, as with `iesm ask`
-        fresh = Retriever(store, provider=provider, method=method, cache=provider != "offline")
+        fresh = Retriever(store, provider=provider, method=method, cache=True)
         # kept under the normalised method ("experts: obj,obj" -> "experts:obj"): a bounded set
         return self._retrievers.setdefault((key[0], fresh.method, provider), fresh)
 

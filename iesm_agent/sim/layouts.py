@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..store.model import GridSpec, Instance, InstanceGrid, SceneMap
-from .labels import CellLabels
+from ..rooms.labels import CellLabels
 
 
 @dataclass

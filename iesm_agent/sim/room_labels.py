@@ -16,10 +16,11 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import IesmError
-from ..frames import FrameSet, GroundTruth
+from ..frames import FrameSet
 from ..mapping.project import world_points
 from ..store.model import GridSpec
-from .labels import CellLabels
+from ..rooms.labels import CellLabels
+from .ground_truth import GroundTruth
 
 
 def _cells(points_xy: np.ndarray, grid: GridSpec) -> np.ndarray:

@@ -8,7 +8,8 @@ from typing import Callable, Optional
 
 import numpy as np
 
-from ..frames import Frame, GroundTruth, SceneMeta, write_frame, write_frame_set
+from ..frames import Frame, SceneMeta, write_frame, write_frame_set
+from .ground_truth import GroundTruth
 from .catalog import CEILING_RGB, FLOOR_RGB, FURNITURE, SMALL
 from .render import BoxRenderer
 from .segmenter import FaultConfig, SyntheticSegmenter

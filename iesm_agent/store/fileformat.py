@@ -19,9 +19,7 @@ from __future__ import annotations
 
 import io
 import json
-import os
 import struct
-import tempfile
 import zipfile
 import zlib
 from pathlib import Path
@@ -31,6 +29,7 @@ import numpy as np
 from pydantic import ValidationError
 
 from ..errors import MapFormatError
+from ..fileio import atomic_write
 from .model import SCHEMA_VERSION, InstanceGrid, SceneMap
 
 MANIFEST = "manifest.json"
@@ -109,18 +108,15 @@ def save_map(scene: SceneMap, path: str | Path, *, embeddings_dtype: Optional[st
                                          "rooms", "meta", "embedding_model"})
     manifest["arrays"] = entries
     manifest_bytes = json.dumps(manifest, ensure_ascii=False, separators=(",", ":")).encode()
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh, zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED, compresslevel=6) as zf:
+    def write(tmp: Path) -> None:
+        with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED, compresslevel=6) as zf:
             zf.writestr(MANIFEST, manifest_bytes)
             for member, data in blobs:
                 # float payloads such as embeddings barely deflate: store them when it saves < 10 %
                 packed = len(zlib.compress(data[:65536], 1)) < 0.9 * min(len(data), 65536)
                 zf.writestr(member, data, zipfile.ZIP_DEFLATED if packed else zipfile.ZIP_STORED)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+
+    atomic_write(path, write)
     return path.stat().st_size
 
 

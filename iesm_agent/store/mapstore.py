@@ -12,7 +12,6 @@ in [0, 1]. When the map has embeddings from the model `embeddings.get_encoder()`
 
 from __future__ import annotations
 
-import importlib
 
 import re
 from pathlib import Path
@@ -224,13 +223,17 @@ class MapStore:
             self._encoder = None
             if self._emb is not None and self.scene.embedding_model:
                 try:  # through sys.modules, so tests can substitute the encoder module
-                    embeddings = importlib.import_module("iesm_agent.embeddings")
+                    from ..embeddings import get_encoder
                 except ImportError:
                     return None
-                declared = getattr(getattr(embeddings, "Encoder", None), "name", None)
+                try:
+                    from ..embeddings import Encoder
+                    declared = getattr(Encoder, "name", None)
+                except ImportError:
+                    declared = None
                 if isinstance(declared, str) and declared != self.scene.embedding_model:
                     return None  # another model made the map's embeddings: do not load ours
-                enc = embeddings.get_encoder()
+                enc = get_encoder()
                 if enc is not None and enc.name == self.scene.embedding_model and enc.dim == self._emb.shape[1]:
                     self._encoder = enc
         return self._encoder

@@ -232,3 +232,10 @@ class SceneMap(BaseModel):
             if inst.id == instance_id:
                 return inst
         raise KeyError(instance_id)
+
+    def cells_of(self, instance_ids) -> np.ndarray:
+        """(H, W) bool: cells occupied by any of `instance_ids`."""
+        flat, ids, _ = self.occupancy.entries()
+        mask = np.zeros(self.grid.height * self.grid.width, bool)
+        mask[flat[np.isin(ids, np.asarray(list(instance_ids), np.int64))]] = True
+        return mask.reshape(self.grid.height, self.grid.width)

@@ -4,13 +4,12 @@ matplotlib (Agg) is imported lazily."""
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import IesmError
+from ..fileio import pyplot, save_figure
 from .model import SceneMap
 
 MAX_LEGEND = 24  # categories beyond this (by cell count) are drawn as "other"
@@ -26,17 +25,6 @@ def _top_instance_per_cell(scene: SceneMap) -> tuple[np.ndarray, np.ndarray]:
     return cells[order][first], ids[order][first]
 
 
-def _pyplot():
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError as exc:
-        raise IesmError("rendering needs matplotlib: pip install 'iesm-agent[plots]'", None, "render") from exc
-    return plt
-
-
 def _check_grid(scene: SceneMap) -> None:
     if scene.grid.height == 0 or scene.grid.width == 0:
         raise IesmError("the map has an empty grid (imported without a PLY?): nothing to render", scene.scene_id)
@@ -48,66 +36,9 @@ def _extent(scene: SceneMap) -> tuple[float, float, float, float]:
     return (g.origin[0], g.origin[0] + g.width * g.cell_size, g.origin[1], g.origin[1] + g.height * g.cell_size)
 
 
-def _save(fig, path: str | Path, dpi: int) -> None:
-    """Write `fig` to `path` as PNG atomically and close it."""
-    plt = _pyplot()
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", format="png")
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    finally:
-        plt.close(fig)
-
-
-def render_rooms(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
-    """Write the room map of `scene` to `path` (PNG): each room's cells in its own colour with its
-    label and id, obstacles dark grey, cells outside every room white."""
-    plt = _pyplot()
-    from matplotlib.patches import Patch
-
-    _check_grid(scene)
-    if scene.room_map is None or not scene.rooms:
-        raise IesmError("the map has no rooms: run `iesm rooms` (or import rooms) first", scene.scene_id)
-    grid = scene.grid
-    cmap = plt.get_cmap("tab20", 20)
-    image = np.ones((grid.height, grid.width, 4))
-    if scene.obstacles is not None:
-        image[scene.obstacles] = (0.3, 0.3, 0.3, 1.0)
-    handles = []
-    xs = grid.origin[0] + (np.arange(grid.width) + 0.5) * grid.cell_size
-    ys = grid.origin[1] + (np.arange(grid.height) + 0.5) * grid.cell_size
-    centres = []
-    for k, room in enumerate(scene.rooms):
-        mask = scene.room_map == room.id
-        if not mask.any():
-            continue
-        colour = cmap(k % 20)
-        image[mask & ~(scene.obstacles if scene.obstacles is not None else False)] = colour
-        handles.append(Patch(facecolor=colour, label=f"{room.id}: {room.label}"))
-        r, c = np.argwhere(mask).mean(0)
-        centres.append((xs[int(round(c))], ys[int(round(r))], room.label))
-    fig, ax = plt.subplots(figsize=(10, max(4.0, 8 * grid.height / grid.width)))
-    ax.imshow(image, origin="lower", extent=_extent(scene), interpolation="nearest")
-    for x, y, label in centres:
-        ax.text(x, y, label, ha="center", va="center", fontsize=8,
-                bbox={"facecolor": "white", "alpha": 0.7, "edgecolor": "none", "pad": 1})
-    if scene.obstacles is not None:
-        handles.append(Patch(facecolor=(0.3, 0.3, 0.3), label="obstacle"))
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, frameon=False)
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    ax.set_title(f"{scene.scene_id}: {len(scene.rooms)} rooms")
-    _save(fig, path, dpi)
-
-
 def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     """Write the top-down render of `scene` to `path` (PNG, written atomically)."""
-    plt = _pyplot()
+    plt = pyplot("render")
     from matplotlib.patches import Patch
 
     _check_grid(scene)
@@ -156,13 +87,13 @@ def render_map(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     ax.set_ylabel("y (m)")
     ax.set_title(f"{scene.scene_id}: {len(scene.instances)} instances, "
                  f"{scene.occupancy.multi_occupancy_cells} stacked cells")
-    _save(fig, path, dpi)
+    save_figure(fig, path, dpi)
 
 
 def render_rooms(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     """Write the room map of `scene` to `path` (PNG): each room's cells in its own colour with its
     label and id, obstacles dark grey, cells outside every room white."""
-    plt = _pyplot()
+    plt = pyplot("render")
     from matplotlib.patches import Patch
 
     _check_grid(scene)
@@ -197,4 +128,4 @@ def render_rooms(scene: SceneMap, path: str | Path, dpi: int = 150) -> None:
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_title(f"{scene.scene_id}: {len(scene.rooms)} rooms")
-    _save(fig, path, dpi)
+    save_figure(fig, path, dpi)

@@ -1,6 +1,6 @@
 """The five-scene mapping study (paper Tables 1-3 on simulated scenes), one command:
 
-    python -m iesm_agent.mapping.study --seeds 0-4 --out evals/mapping
+    python -m iesm_agent.evals.studies.mapping --seeds 0-4 --out evals/mapping
 
 For each seed: generate a scene and render its frames (iesm_agent.sim), build our 2.5D map with
 and without the second pass and the VLMaps-style 2D point-wise map from the same frames and
@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 import tempfile
 import time
@@ -20,11 +19,14 @@ from typing import Optional
 
 import numpy as np
 
-from ..config import MappingConfig
-from ..frames import FrameSet, GroundTruth
-from .baseline2d import PointwiseMap2D
-from .build import MapBuilder, category_vectors
-from .evaluate import EvalContext, prediction_from_map, prediction_from_pointwise, score
+from ...config import MappingConfig
+from ...fileio import write_text
+from ...frames import FrameSet
+from ...mapping.build import MapBuilder, category_vectors
+from ...sim.ground_truth import GroundTruth
+from . import parse_seeds
+from ..baseline2d import PointwiseMap2D
+from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
 
 METHODS = ("ours", "ours_no_second_pass", "pointwise_2d")
 TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass", "pointwise_2d": "2D point-wise + GT mask"}
@@ -108,26 +110,10 @@ def table_markdown(mean: dict, per_scene: dict[str, dict]) -> str:
     return "\n".join(lines)
 
 
-def parse_seeds(text: str) -> list[int]:
-    """'0-4' or '0,3,7' -> seeds."""
-    seeds: list[int] = []
-    for part in text.split(","):
-        lo, _, hi = part.partition("-")
-        seeds += list(range(int(lo), int(hi) + 1)) if hi else [int(lo)]
-    return seeds
-
-
-def _write(path: Path, text: str) -> None:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-    with os.fdopen(fd, "w") as fh:
-        fh.write(text)
-    os.replace(tmp, path)
-
-
 def run_study(seeds: list[int], out: Path, *, size: str = "small", frames_root: Optional[Path] = None,
               space: Optional[str] = None, log=print) -> dict:
     """Render (or reuse, under `frames_root`) each seed's frames, study them, write table.md and summary.json."""
-    from ..sim import generate_scene, render_frames
+    from ...sim import generate_scene, render_frames
 
     out.mkdir(parents=True, exist_ok=True)
     cfg = MappingConfig()
@@ -145,14 +131,14 @@ def run_study(seeds: list[int], out: Path, *, size: str = "small", frames_root: 
                 f"{o['instance_diff']} (w/o 2nd pass {result['ours_no_second_pass']['instance_diff']})")
     mean = summarise(per_scene)
     summary = {"seeds": seeds, "size": size, "config": cfg.model_dump(), "mean": mean, "scenes": per_scene}
-    _write(out / "summary.json", json.dumps(summary, indent=1) + "\n")
-    _write(out / "table.md", "# Mapping study\n\nCommand: `python -m iesm_agent.mapping.study --seeds "
+    write_text(out / "summary.json", json.dumps(summary, indent=1) + "\n")
+    write_text(out / "table.md", "# Mapping study\n\nCommand: `python -m iesm_agent.evals.studies.mapping --seeds "
            f"{','.join(map(str, seeds))} --out {out}`\n\n" + table_markdown(mean, per_scene))
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.mapping.study", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.mapping", description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", default="0-4")
     parser.add_argument("--out", type=Path, default=Path("evals/mapping"))
     parser.add_argument("--size", default="small", choices=["small", "hm3d"])

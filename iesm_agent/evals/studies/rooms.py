@@ -2,63 +2,52 @@
 per-cell CLIP-like labels alone (the paper's baseline), LSD components with majority labels (the
 paper's method) and LSD components with the contextual open-plan split (ours).
 
-    python -m iesm_agent.rooms.study --seeds 0-4 --out evals/rooms [--work DIR]
+    python -m iesm_agent.evals.studies.rooms --seeds 0-4 --out evals/rooms [--work DIR]
 
 Scenes are simulated and mapped with `iesm sim` and `iesm build-map` into the work directory
-(kept between runs); writes OUT/table.md and OUT/summary.json (metric definitions: rooms/metrics.py).
+(kept between runs); writes OUT/table.md and OUT/summary.json (metric definitions: evals/rooms.py).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import statistics
 import tempfile
 from pathlib import Path
 
-from ..errors import IesmError
+from ...errors import IesmError
+from ...fileio import write_text
+from . import parse_seeds
 
 METHODS = {"baseline": "per-cell labels (CLIP-like baseline)", "lsd": "LSD components + majority (paper)",
            "split": "LSD + contextual split (ours)"}
 METRICS = ("acc", "macc", "miou", "precision", "recall")
 
 
-def parse_seeds(text: str) -> list[int]:
-    """"0-4" or "0,2,5" -> seeds."""
-    try:
-        seeds: list[int] = []
-        for part in text.split(","):
-            lo, _, hi = part.partition("-")
-            seeds += list(range(int(lo), int(hi or lo) + 1))
-    except ValueError:
-        raise IesmError(f"expected seeds like 0-4 or 0,2,5, got {text!r}", None, "--seeds") from None
-    return seeds
-
-
 def prepare_scene(work: Path, seed: int, open_plan: bool) -> tuple[Path, Path]:
     """(frame dir, built map) of one scene, simulated and mapped unless already in `work`."""
-    from ..cli import run
+    from ...frames import FrameSet
+    from ...mapping.build import build_map
+    from ...sim import generate_scene, render_frames
+    from ...store import save_map
 
     frames = work / f"{'open' if open_plan else 'walled'}-{seed}"
     built = frames.with_suffix(".iesm")
     if not (frames / "gt" / "rooms.npy").is_file():
-        if run(["sim", "--seed", str(seed), "--out", str(frames), "--force"] + (["--open-plan"] if open_plan else [])):
-            raise IesmError(f"iesm sim failed for seed {seed}", frames)
+        render_frames(generate_scene(seed, "small", open_plan), frames)
     if not built.is_file():
-        if run(["build-map", str(frames), "-o", str(built)]):
-            raise IesmError(f"iesm build-map failed for seed {seed}", frames)
+        save_map(build_map(FrameSet.open(frames)), built)
     return frames, built
 
 
 def score_scene(frames: Path, built: Path, seed: int) -> dict:
     """Metrics of the three methods on one built map against its ground truth."""
-    from ..frames import GroundTruth
-    from ..store import load_map
-    from . import RoomConfig, segment_scene
-    from .metrics import baseline_scores, gt_room_labels, resample, score_room_map
-    from .labels import CellLabels
-    from .sim_labels import ViewpointLabels
+    from ...rooms import CellLabels, RoomConfig, segment_scene
+    from ...sim.ground_truth import GroundTruth
+    from ...sim.room_labels import ViewpointLabels
+    from ...store import load_map
+    from ..rooms import baseline_scores, gt_room_labels, resample, score_room_map
 
     scene, gt = load_map(built), GroundTruth.load(frames)
     labels = ViewpointLabels(frames, seed=seed).cell_labels(scene.grid)
@@ -79,9 +68,9 @@ def _mean(rows: list[dict], method: str) -> dict:
 def render_table(summary: dict) -> str:
     lines = ["# Room segmentation on simulated scenes", "",
              f"Seeds {summary['seeds']}; built maps (`iesm sim` + `iesm build-map`), simulated viewpoint-dependent",
-             "per-cell labels (`rooms/sim_labels.py`); metrics as defined in `iesm_agent/rooms/metrics.py`",
+             "per-cell labels (`sim/room_labels.py`); metrics as defined in `iesm_agent/evals/rooms.py`",
              "(Acc/mAcc/mIoU over cells inside ground-truth rooms; per-room precision/recall by best overlap).",
-             "Regenerate: `python -m iesm_agent.rooms.study --seeds "
+             "Regenerate: `python -m iesm_agent.evals.studies.rooms --seeds "
              f"{summary['seeds_arg']} --out evals/rooms`.", ""]
     for setting in ("walled", "open"):
         lines += [f"## {'Walled scenes' if setting == 'walled' else 'Open-plan scenes'} "
@@ -115,15 +104,12 @@ def run_study(seeds: list[int], out: Path, work: Path, seeds_arg: str) -> dict:
                "mean": {s: {m: _mean(rows, m) for m in METHODS} for s, rows in scenes.items()}}
     out.mkdir(parents=True, exist_ok=True)
     for name, text in (("summary.json", json.dumps(summary, indent=2) + "\n"), ("table.md", render_table(summary))):
-        fd, tmp = tempfile.mkstemp(dir=out, prefix=f".{name}.")
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        os.replace(tmp, out / name)
+        write_text(out / name, text)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.rooms.study", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.rooms", description=__doc__.split("\n\n")[0])
     parser.add_argument("--seeds", default="0-4")
     parser.add_argument("--out", type=Path, default=Path("evals/rooms"))
     parser.add_argument("--work", type=Path, default=None, help="scene cache (default: a temporary directory)")

@@ -23,6 +23,7 @@ class OfflineModel(Model):
 
     name = "offline"
     capabilities = Capabilities(json_schema=True)
+    cacheable = False
 
     def __init__(self, use_embeddings: bool | None = None):
         self._use_embeddings = use_embeddings

@@ -16,7 +16,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from ...errors import MapFormatError
-from ..colors import color_name
+from ...colours import colour_name
 from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
 from . import check_grid_size, field_path, read_json
 
@@ -210,7 +210,7 @@ def import_objects(path: str | Path, cell_size: float = 0.05) -> SceneMap:
             room = next((r for r in rooms if r.id == rid), None)
         tags = dict(obj.tags)
         if obj.color_rgb is not None and "color" not in tags:
-            tags["color"] = color_name(obj.color_rgb)
+            tags["color"] = colour_name(obj.color_rgb)
         bottom = obj.center[2] - obj.size[2] / 2
         caption = obj.caption if obj.caption else build_caption(
             obj.label, tags, obj.size, bottom, room.label if room else None)
