@@ -31,6 +31,7 @@ def build(seed: int = 0, n: int = 300, size: int = 600, dim: int = 512) -> Scene
     for k in range(len(ROOMS)):  # 4 x 2 blocks of rooms
         r0, c0 = (k // 4) * size // 2, (k % 4) * size // 4
         room_map[r0 + 5:r0 + size // 2 - 5, c0 + 5:c0 + size // 4 - 5] = k
+    prev_rc, ph, pw = (0, 0), 0, 0  # the previous instance's box, for the stacked ones
     for i in range(n):
         stacked = i % 5 == 4  # every fifth instance sits on the previous one
         if stacked:

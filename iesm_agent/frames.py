@@ -9,7 +9,6 @@ PNG I/O uses OpenCV (the `mapping` extra). Every bad file gives an `IesmError` n
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator, Literal, Optional, Protocol
