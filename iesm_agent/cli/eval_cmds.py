@@ -85,7 +85,37 @@ def _print_table(summary: dict) -> None:
         table.add_row(name, *[f"{100 * m['by_type'][t]['osr']:.1f}" if t in m["by_type"] else "-"
                               for t in summary["types"]],
                       f"{100 * o['osr']:.1f}", f"{o['mrr']:.3f}", f"{100 * o['top3']:.1f}")
-    Console(width=None if sys.stdout.isatty() else 160).print(table)  # no truncated columns in logs
+    console = Console(width=None if sys.stdout.isatty() else 160)  # no truncated columns in logs
+    console.print(table)
+    _print_groups(console, summary)
+
+
+def _print_groups(console, summary: dict) -> None:
+    """Paraphrase consistency per variant (suites with groups) and each variant's worst groups."""
+    from rich.table import Table
+
+    from ..evals.metrics import ordered_types, type_title
+
+    grouped = {name: m["groups"] for name, m in summary["methods"].items() if "groups" in m}
+    if not grouped:
+        return
+    types = ordered_types({t for g in grouped.values() for t in g["by_type"]})
+    table = Table(title="Paraphrase groups (%): all wordings correct / same pick")
+    for column in ("variant", "groups", "O-SR", "all correct", "same pick", *map(type_title, types)):
+        table.add_column(column, justify="left" if column == "variant" else "right", no_wrap=column == "variant")
+    for name, g in grouped.items():
+        o = g["overall"]
+        cells = [f"{100 * g['by_type'][t]['all_correct']:.0f} / {100 * g['by_type'][t]['consistent_pick']:.0f}"
+                 if t in g["by_type"] else "-" for t in types]
+        table.add_row(name, str(o["n"]), f"{100 * summary['methods'][name]['overall']['osr']:.1f}",
+                      f"{100 * o['all_correct']:.1f}", f"{100 * o['consistent_pick']:.1f}", *cells)
+    console.print(table)
+    for name, g in grouped.items():
+        for w in g["worst"][:3]:
+            picks = ", ".join(f"{r['query']!r} -> {r['predicted']}{'' if r['correct'] else ' (wrong)'}"
+                              for r in w["wordings"])
+            console.print(f"worst {name} {w['group']} {w['correct']}/{w['n']}: {picks}", markup=False,
+                          highlight=False)
 
 
 def gen_queries_command(

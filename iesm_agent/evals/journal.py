@@ -25,6 +25,7 @@ class ResultRecord(BaseModel):
     variant: str
     method: str
     type: Optional[str] = None
+    group: Optional[str] = None  # the suite line's paraphrase group
     map: str
     query: str
     target: int

@@ -79,7 +79,10 @@ def _type_row(records: Sequence[ResultRecord]) -> dict:
 
 def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> dict:
     """`{"methods": {variant: {"overall": {...}, "by_type": {type: {"n", "osr"}}}}}`, variants
-    in the order given (then any others in order of appearance)."""
+    in the order given (then any others in order of appearance). A variant whose records carry
+    paraphrase groups also gets `"groups"` (`paraphrase.group_summary`)."""
+    from .paraphrase import group_summary
+
     grouped: dict[str, list[ResultRecord]] = {v: [] for v in variants}
     for record in records:
         grouped.setdefault(record.variant, []).append(record)
@@ -96,6 +99,9 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
             "overall": overall,
             "by_type": {t: _type_row(by_type[t]) for t in order},
         }
+        groups = group_summary(group)
+        if groups is not None:
+            methods[variant]["groups"] = groups
     return {"methods": methods}
 
 

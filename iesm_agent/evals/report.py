@@ -74,10 +74,41 @@ def render_markdown(summary: dict, plot: str | None) -> str:
         for t in summary["significance"]:
             title = type_title(t["type"])
             lines.append(f"| {t['a']} | {t['b']} | {title} | {t['n']} | {t['a_only']} | {t['b_only']} | {t['p']:.4f} |")
+    lines += _paraphrase_lines(methods)
     invalid = summary.get("invalid_lines", [])
     if invalid:
         lines += ["", f"## Skipped suite lines ({len(invalid)})", ""] + [f"- {e}" for e in invalid]
     return "\n".join(lines) + "\n"
+
+
+def _paraphrase_lines(methods: dict) -> list[str]:
+    """The paraphrase-consistency section (empty when no method has groups): shares per method,
+    overall and per query type, then each method's worst groups with their wordings and picks."""
+    grouped = {name: m["groups"] for name, m in methods.items() if "groups" in m}
+    if not grouped:
+        return []
+    first = next(iter(grouped.values()))
+    types = ordered_types({t for g in grouped.values() for t in g["by_type"]})
+    lines = ["", "## Paraphrase consistency (%)", "",
+             f"{first['overall']['n']} groups of two or more wordings ({first['overall']['wordings']} lines). "
+             "All correct: every wording answered correctly; same pick: every wording picked the same instance. "
+             "Per type: all correct / same pick.", "",
+             "| Method | O-SR | all correct | same pick | " + " | ".join(type_title(t) for t in types) + " |",
+             "|---|" + "---:|" * (3 + len(types))]
+    for name, g in grouped.items():
+        cells = [f"{_pct(g['by_type'][t]['all_correct'])} / {_pct(g['by_type'][t]['consistent_pick'])}"
+                 if t in g["by_type"] else "-" for t in types]
+        lines.append(f"| {name} | {_pct(methods[name]['overall']['osr'])} | {_pct(g['overall']['all_correct'])} "
+                     f"| {_pct(g['overall']['consistent_pick'])} | " + " | ".join(cells) + " |")
+    for name, g in grouped.items():
+        if not g["worst"]:
+            continue
+        lines += ["", f"### Worst groups: {name}", ""]
+        for w in g["worst"]:
+            lines.append(f"- `{w['group']}` {type_title(w['type'])}: {w['correct']}/{w['n']} correct")
+            lines += [f"  - {'ok ' if r['correct'] else 'MISS'} `{r['id']}` {r['query']!r} -> {r['predicted']}"
+                      for r in w["wordings"]]
+    return lines
 
 
 def plot_osr(summary: dict, path: Path) -> bool:

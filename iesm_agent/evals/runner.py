@@ -245,7 +245,7 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> Resu
     res = await retriever.aask(q.query, target=q.target)
     scored = [i for i in res.ranking if i in res.scores]
     return ResultRecord(
-        id=q.id, variant=variant.name, method=variant.method, type=q.type, map=q.map, query=q.query,
+        id=q.id, variant=variant.name, method=variant.method, type=q.type, group=q.group, map=q.map, query=q.query,
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
         rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
         tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
