@@ -36,6 +36,8 @@ class SuiteQuery(BaseModel):
     target: int
     accept: list[int] = Field(default_factory=list)
     start: Optional[tuple[float, float]] = None  # (x, y) m: the robot's start for N-SR
+    #: paraphrase group: lines with the same group are wordings of one intent
+    group: Optional[str] = Field(default=None, min_length=1, max_length=200)
 
     @model_validator(mode="after")
     def _target_accepted(self) -> "SuiteQuery":
