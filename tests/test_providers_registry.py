@@ -164,3 +164,20 @@ def test_broken_plugin_names_the_entry_point(tmp_path, monkeypatch):
     monkeypatch.syspath_prepend(str(tmp_path))
     with pytest.raises(IesmError, match="iesm_agent.providers:plug.*missing dependency foo"):
         get_model("plug:x")
+
+
+def test_llamacpp_spec_needs_an_existing_gguf_file(tmp_path):
+    with pytest.raises(IesmError, match="give a GGUF file"):
+        get_model("llamacpp:")
+    with pytest.raises(IesmError, match="no such GGUF model file"):
+        get_model(f"llamacpp:{tmp_path / 'missing.gguf'}")
+    assert "llamacpp" in providers()
+
+
+def test_request_timeout_from_the_environment(monkeypatch):
+    monkeypatch.setenv("IESM_TIMEOUT", "300")
+    assert get_model("openai-compat:m", base_url="http://127.0.0.1:9/v1").timeout == 300.0
+    assert get_model("openai-compat:m", base_url="http://127.0.0.1:9/v1", timeout=5).timeout == 5.0
+    monkeypatch.setenv("IESM_TIMEOUT", "soon")
+    with pytest.raises(IesmError, match="IESM_TIMEOUT: must be a number of seconds"):
+        get_model("openai-compat:m", base_url="http://127.0.0.1:9/v1")

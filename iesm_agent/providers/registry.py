@@ -103,8 +103,22 @@ def _openai_compat(model_name: str, **opts: Any) -> Model:
     return _http("openai-compat", model_name, base_url, key, opts)
 
 
+def _llamacpp(model_name: str, **opts: Any) -> Model:
+    if not model_name:
+        raise IesmError("give a GGUF file, e.g. llamacpp:models/gemma.gguf", "llamacpp")
+    window = opts.pop("context_window", None)
+    for key in _TRANSPORT:
+        opts.pop(key, None)
+    from .llamacpp import LlamaCppModel  # llama_cpp itself is imported on the first call
+
+    try:
+        return LlamaCppModel(model_name, context_window=window, **opts)
+    except TypeError as exc:
+        raise IesmError(f"bad option: {exc}", f"llamacpp:{model_name}") from exc
+
+
 _BUILTINS: dict[str, Factory] = {"offline": _offline, "openai": _openai, "ollama": _ollama,
-                                 "openai-compat": _openai_compat}
+                                 "openai-compat": _openai_compat, "llamacpp": _llamacpp}
 _REGISTERED: dict[str, Factory] = {}
 
 
@@ -138,12 +152,24 @@ class _EntryPointFactory:
         return factory(model_name, **opts)
 
 
+def _default_timeout() -> float:
+    """`$IESM_TIMEOUT` (seconds) when set, else 60."""
+    value = os.environ.get("IESM_TIMEOUT")
+    if not value:
+        return 60.0
+    try:
+        return float(value)
+    except ValueError:
+        raise IesmError(f"must be a number of seconds, got {value!r}", "IESM_TIMEOUT") from None
+
+
 def get_model(spec: str | Model, *, base_url: str | None = None, api_key_env: str | None = None,
-              cache: bool | str | Path | None = None, timeout: float = 60.0, max_retries: int = 4,
+              cache: bool | str | Path | None = None, timeout: float | None = None, max_retries: int = 4,
               concurrency: int = 8, **opts: Any) -> Model:
     """The model named by `spec` (`prefix` or `prefix:model`; a `Model` passes through).
 
-    `timeout` in seconds; `cache`: None/False none, True the default directory, a path that
+    `timeout` in seconds per request (default `$IESM_TIMEOUT`, else 60: a local server that
+    answers one request at a time needs more); `cache`: None/False none, True the default directory, a path that
     directory (wraps the model in `CachedModel`; not for models that are not `cacheable`). Unknown prefixes raise `IesmError` listing
     the known ones.
     """
@@ -160,7 +186,8 @@ def get_model(spec: str | Model, *, base_url: str | None = None, api_key_env: st
             if factory is None:
                 raise IesmError(f"unknown provider {prefix!r}; known: {', '.join(sorted(table))}",
                                 "model", spec)
-        model = factory(name, base_url=base_url, api_key_env=api_key_env, timeout=timeout,
+        model = factory(name, base_url=base_url, api_key_env=api_key_env,
+                        timeout=timeout if timeout is not None else _default_timeout(),
                         max_retries=max_retries, concurrency=concurrency, **opts)
         if not isinstance(model, Model):
             raise IesmError(f"provider {prefix!r} returned {type(model).__name__}, not a Model",
