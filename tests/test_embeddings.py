@@ -60,17 +60,25 @@ def test_switch_off_returns_none(monkeypatch):
 
 
 @pytest.mark.slow
-def test_loads_without_network():
-    code = ("import socket\n"
+def test_exports_and_loads_without_network(tmp_path):
+    """A fresh cache: the ONNX export is made from the bundled weights with the network cut,
+    and the next process loads it without importing torch."""
+    code = ("import socket, sys\n"
             "def deny(*a, **k): raise OSError('network disabled')\n"
             "socket.socket.connect = deny\n"
             "socket.create_connection = deny\n"
             "from iesm_agent.embeddings import get_encoder\n"
-            "e = get_encoder(); print(e.encode(['sofa']).shape)")
-    env = {"PATH": "/usr/bin:/bin", "HOME": "/nonexistent", "IESM_EMBEDDINGS": "1"}
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=240)
-    assert out.returncode == 0, out.stderr[-2000:]
-    assert "(1, 384)" in out.stdout
+            "e = get_encoder(); print(e.backend.kind, e.encode(['sofa']).shape, 'torch' in sys.modules)")
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "IESM_EMBEDDINGS": "1",
+           "IESM_CACHE_DIR": str(tmp_path / "cache")}
+    first = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=240)
+    assert first.returncode == 0, first.stderr[-2000:]
+    assert first.stdout.split()[0] == "onnx" and "(1, 384)" in first.stdout
+    assert "exporting the sentence encoder to ONNX" in first.stderr
+    again = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=240)
+    assert again.returncode == 0, again.stderr[-2000:]
+    assert again.stdout.split() == ["onnx", "(1,", "384)", "False"]  # torch never imported
+    assert "exporting" not in again.stderr
 
 
 @pytest.mark.slow

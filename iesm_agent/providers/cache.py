@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import sqlite3
 import threading
 import time
@@ -22,6 +21,7 @@ from typing import Any
 import diskcache
 from pydantic import ValidationError
 
+from ..cachedir import default_cache_dir
 from .base import ChatOptions, Completion, Message, Model
 
 #: bump when the key layout changes, so old entries are never misread
@@ -30,16 +30,6 @@ KEY_VERSION = 1
 
 class CacheWarning(RuntimeWarning):
     """The response cache is unusable and has been turned off for this model."""
-
-
-def default_cache_dir() -> Path:
-    """`$IESM_CACHE_DIR`, else the platform's user cache dir for `iesm-agent`."""
-    env = os.environ.get("IESM_CACHE_DIR")
-    if env:
-        return Path(env).expanduser()
-    import platformdirs  # deferred: only needed when no directory is given
-
-    return Path(platformdirs.user_cache_dir("iesm-agent", appauthor=False))
 
 
 def cache_key(model: Model, messages: list[Message], options: ChatOptions) -> str:

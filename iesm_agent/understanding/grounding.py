@@ -21,7 +21,6 @@ MIN_SIMILARITY = 0.45
 MIN_MARGIN = 0.05
 _CACHE_SIZE = 4096
 _grounded: dict[tuple, QueryInfo] = {}
-_vectors: dict[tuple[str, str], np.ndarray] = {}
 
 
 def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], encoder: Any) -> QueryInfo:
@@ -74,11 +73,5 @@ def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> tuple[str | N
 
 
 def _encode(encoder: Any, texts: Sequence[str]) -> np.ndarray:
-    """(N, D) unit vectors of `texts`, each encoded once per encoder."""
-    missing = [t for t in dict.fromkeys(texts) if (encoder.name, t) not in _vectors]
-    if missing:
-        if len(_vectors) > 50_000:
-            _vectors.clear()
-        for text, vec in zip(missing, encoder.encode(missing)):
-            _vectors[encoder.name, text] = vec
-    return np.stack([_vectors[encoder.name, t] for t in texts])
+    """(N, D) unit vectors of `texts` (the encoder memoises them)."""
+    return np.asarray(encoder.encode(list(texts)), np.float32)
