@@ -69,13 +69,22 @@ def test_tie_on_u_decided_by_sum_then_peak():
     assert res.ranking == (10, 11, 1, 2)
 
 
-def test_expert_that_returned_nothing_contributes_zero():
-    lam = 0.75 + 0.25 * 1 / 17
+def test_abstaining_expert_weight_is_redistributed_over_the_experts_that_answered():
+    lam = 0.75 + 0.25 * 1 / 17                       # kappa 2, gamma 0.75, mu 16
     for rankings in ({"obj": [7, 3], "room": []}, {"obj": [7, 3]}):
         res = fuse({"obj": 0.5, "room": 0.5}, rankings)
-        assert res.scores[7] == pytest.approx(lam * 0.5 * 2 + (1 - lam) * 0.5 * 2)
-        assert res.scores[3] == pytest.approx(0.5)
+        assert res.weights == {"obj": 1.0} and res.abstained == {"room": 0.5}
+        assert res.scores[7] == pytest.approx(lam * 1.0 * 2 + (1 - lam) * 1.0 * 2)   # nu = 2 at rank 1
+        assert res.scores[3] == pytest.approx(1.0)                                   # nu = 1 at rank 2
         assert res.ranking == (7, 3) and not res.uniform_fallback
+    # three experts, spatial abstains: 0.5 and 0.3 become 0.5/0.8 and 0.3/0.8
+    res = fuse({"obj": 0.5, "room": 0.3, "spatial": 0.2}, {"obj": [7, 3], "room": [3, 7], "spatial": []})
+    assert res.weights == pytest.approx({"obj": 0.625, "room": 0.375}) and res.abstained == {"spatial": 0.2}
+    s7, s3 = 0.625 * 2 + 0.375 * 1, 0.625 * 1 + 0.375 * 2                # S_sum
+    p7, p3 = 0.625 * 2, 0.375 * 2                                        # P = max_e w_e nu_e
+    assert res.scores[7] == pytest.approx(lam * p7 + (1 - lam) * s7)
+    assert res.scores[3] == pytest.approx(lam * p3 + (1 - lam) * s3)
+    assert res.best == 7
     empty = fuse({"obj": 1.0}, {"obj": []})
     assert empty.best is None and empty.ranking == () and empty.scores == {}
 

@@ -52,6 +52,8 @@ class Session:
     dry_run: bool = False
     calls: list[CallTrace] = field(default_factory=list)
     failures: list[str] = field(default_factory=list)
+    #: what the method did that is not a failure (an expert abstained, its weight went elsewhere)
+    notes: list[str] = field(default_factory=list)
     estimates: list[int] = field(default_factory=list)
     overflowed: bool = False
 

@@ -34,6 +34,9 @@ class FusionResult:
     weights: dict[str, float] = field(default_factory=dict)
     nu: dict[str, dict[int, int]] = field(default_factory=dict)
     uniform_fallback: bool = False
+    #: gate weights (normalised over every expert) of the experts that returned no ranking; their
+    #: weight is redistributed over the experts that answered
+    abstained: dict[str, float] = field(default_factory=dict)
 
     def deciding_expert(self) -> str | None:
         """The expert whose weighted rank score w_e (nu_{e,best} - nu_{e,runner-up}) most separates
@@ -57,17 +60,17 @@ def lambda_schedule(kappa: int, gamma: float, mu: float) -> float:
 
 
 def normalise_weights(weights: Mapping[str, float], ranked: Sequence[str]) -> tuple[dict[str, float], bool]:
-    """Weights scaled to sum 1; uniform over `ranked` experts when none of them has weight.
-
-    Returns (weights, uniform_fallback). Negative or non-finite weights raise ValueError.
-    """
+    """Weights of the `ranked` experts (those that answered) scaled to sum 1, so an abstaining
+    expert's weight is redistributed over them in proportion to theirs; uniform over `ranked`
+    when none of them has weight. Returns (weights, uniform_fallback). Negative or non-finite
+    weights raise ValueError."""
     for name, w in weights.items():
         if not math.isfinite(w) or w < 0:
             raise ValueError(f"expert weight must be finite and >= 0, got {name}={w!r}")
     if not any(weights.get(name, 0.0) > 0 for name in ranked):
         return ({name: 1.0 / len(ranked) for name in ranked} if ranked else {}), bool(ranked)
-    total = sum(weights.values())
-    return {name: w / total for name, w in weights.items()}, False
+    total = sum(weights.get(name, 0.0) for name in ranked)
+    return {name: weights.get(name, 0.0) / total for name in ranked}, False
 
 
 def fuse(weights: Mapping[str, float], rankings: Mapping[str, Sequence[int]], *,
@@ -77,6 +80,8 @@ def fuse(weights: Mapping[str, float], rankings: Mapping[str, Sequence[int]], *,
         raise ValueError(f"kappa must be >= 1, got {kappa}")
     ranked = sorted(name for name, ids in rankings.items() if ids)
     w, fallback = normalise_weights(weights, ranked)
+    total = sum(weights.values())
+    abstained = {name: (weights[name] / total if total > 0 else 0.0) for name in sorted(weights) if name not in ranked}
     lam = lambda_schedule(kappa, gamma, mu)
 
     nu: dict[str, dict[int, int]] = {}  # expert -> id -> kappa - rank + 1, top-kappa only
@@ -108,4 +113,4 @@ def fuse(weights: Mapping[str, float], rankings: Mapping[str, Sequence[int]], *,
     ranking = tuple(sorted(scores, key=key))
     return FusionResult(best=ranking[0] if ranking else None, ranking=ranking, scores=scores,
                         sum_scores=sum_scores, peak_scores=peak_scores, lam=lam,
-                        weights=w, nu=nu, uniform_fallback=fallback)
+                        weights=w, nu=nu, uniform_fallback=fallback, abstained=abstained)

@@ -16,7 +16,7 @@ from ..config import RetrievalConfig
 from .calls import Outcome, Reply, Session
 from .experts import ExpertSpec
 from .fusion import fuse
-from .replies import GATE_SCHEMA, parse_gate, ranking_schema
+from .replies import GATE_SCHEMA, abstain_reason, parse_gate, ranking_schema
 
 if TYPE_CHECKING:
     from .methods import CandidateViews
@@ -70,12 +70,18 @@ async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], c
                                          for s in active))
 
     candidates = frozenset(candidate_ids)
-    rankings = {}
+    rankings, abstentions = {}, {}
     for spec, reply in zip(active, replies):
         ids = session.ranking(reply, candidates, kappa)
-        if ids is not None:
+        if ids:
             rankings[spec.name] = ids
+        elif ids is not None:
+            abstentions[spec.name] = abstain_reason(reply.text or "") or "no ranking"
     fusion = fuse(weights, rankings, kappa=kappa, gamma=config.gamma, mu=config.mu)
+    answered = ", ".join(fusion.weights) or "none"
+    for name, reason in abstentions.items():
+        session.notes.append(f"{name} abstained ({reason}): its weight {fusion.abstained.get(name, 0.0):.2f} "
+                             f"redistributed over {answered}")
     if fusion.uniform_fallback:
         session.failures.append("fusion: no expert with a positive gate weight returned a ranking; "
                                 "uniform weights over the others used")

@@ -101,7 +101,18 @@ KEYWORD_SCHEMA: dict[str, Any] = {"type": "object", "required": ["object", "room
 
 
 def ranking_schema(kappa: int) -> dict[str, Any]:
-    """JSON schema of an expert / SPR reply."""
+    """JSON schema of an expert / SPR reply: an empty list with a reason in `abstain` says the
+    query holds nothing of the expert's kind."""
     return {"type": "object", "required": ["ranked_instance_ids"], "properties": {
-        "ranked_instance_ids": {"type": "array", "items": {"type": "integer"}, "maxItems": kappa}}}
+        "ranked_instance_ids": {"type": "array", "items": {"type": "integer"}, "maxItems": kappa},
+        "abstain": {"type": "string"}}}
+
+
+def abstain_reason(text: str) -> str:
+    """The reason an expert reply gives for abstaining ("" when it gives none)."""
+    try:
+        reason = parse_json_reply(text).get("abstain")
+    except ValueError:
+        return ""
+    return reason.strip()[:200] if isinstance(reason, str) else ""
 

@@ -55,6 +55,9 @@ class RetrievalResult(BaseModel):
     names: dict[int, str] = Field(default_factory=dict)
     calls: list[CallTrace] = Field(default_factory=list)
     failures: list[str] = Field(default_factory=list)
+    #: gate weight of each expert that abstained (returned no ranking); redistributed over the others
+    abstained: dict[str, float] = Field(default_factory=dict)
+    notes: list[str] = Field(default_factory=list)
     candidate_ids: list[int] = Field(default_factory=list)
     instances_considered: int = 0
     target: int | None = None
@@ -82,7 +85,7 @@ class RetrievalResult(BaseModel):
             weights = ", ".join(f"{e} {w:.2f}" for e, w in sorted(self.gate.items(), key=lambda kv: -kv[1]))
             lines.append(f"gate weights: {weights}")
         for expert, ids in self.experts.items():
-            picks = ", ".join(f"#{i} {name(i, '?')}" for i in ids) or "(nothing)"
+            picks = ", ".join(f"#{i} {name(i, '?')}" for i in ids) or "(abstained)"
             lines.append(f"  {expert} expert: {picks}")
         lines.extend(self._agreement())
         scored = [i for i in self.ranking if i in self.scores][:top]
@@ -94,6 +97,7 @@ class RetrievalResult(BaseModel):
         if self.deciding_expert:
             lines.append(f"deciding expert: {self.deciding_expert} (most separates #{self.instance_id} "
                          "from the runner-up)")
+        lines += [f"note: {note}" for note in self.notes]
         for failure in self.failures:
             lines.append(f"failure: {failure}")
         return "\n".join(lines)

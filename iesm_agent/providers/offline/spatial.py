@@ -219,13 +219,17 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
 
 def rank(prompt: Prompt) -> dict:
     """Top-kappa candidate ids of the target kind by how well they satisfy the relations."""
-    empty = {"ranked_instance_ids": []}
+    def abstain(reason: str) -> dict:
+        return {"ranked_instance_ids": [], "abstain": reason}
+
     sq = parse_query(prompt.query)
-    if not sq.relations or sq.unknown_target:
-        return empty
+    if not sq.relations:
+        return abstain("the query states no spatial relation, comparison, order or viewpoint")
+    if sq.unknown_target:
+        return abstain("the target is a word I do not know")
     scene = _read_scene(prompt)
     if not len(scene.boxes):
-        return empty
+        return abstain("no candidates")
     if sq.target:
         kind = _of_kind(scene, sq.target, sq.attrs)
     else:  # "the one on the left": anything that is not a landmark
@@ -237,13 +241,13 @@ def rank(prompt: Prompt) -> dict:
     if in_room.any():  # "... in the bedroom": that room's instances
         targets = targets[in_room]
     if not len(targets):
-        return empty
+        return abstain("no candidate of the target kind")
     facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
     total = np.zeros(len(targets))
     for rel in sq.relations:
         scores = _relation_scores(rel, scene, targets, facing)
         if scores is None:
-            return empty  # a landmark the map lacks: no guess
+            return abstain("a landmark the map lacks")  # no guess
         total += 1.0 - scores if rel.negated else scores
     order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
     return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
