@@ -84,6 +84,7 @@ def _openai(model_name: str, **opts: Any) -> Model:
     key = _api_key(source, opts.get("api_key_env"), ("OPENAI_API_KEY",))
     if key[0] is None:
         raise IesmError("set the environment variable OPENAI_API_KEY to an API key", source, "api_key")
+    opts.setdefault("probe_window", False)  # OpenAI names the window in its refusals
     return _http("openai", model_name, OPENAI_URL, key, opts)
 
 
