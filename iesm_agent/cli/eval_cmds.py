@@ -123,6 +123,10 @@ def gen_queries_command(
     types: str = typer.Option("o,or,od,ord,ard", "--types", help="Query types, comma separated."),
     per_type: int = typer.Option(10, "--per-type", "-n", help="Queries per type and map."),
     seed: int = typer.Option(0, "--seed", help="Random seed (same seed, same suite)."),
+    paraphrases: int = typer.Option(1, "--paraphrases", "-k",
+                                    help="Wordings per intent; K > 1 writes paraphrase groups (`group`)."),
+    id_prefix: str = typer.Option("", "--id-prefix",
+                                  help="Prefix for every query id and group (suites from two seeds evaluated together)."),
     out: Path = typer.Option(..., "--out", "-o", help="Suite file to write (JSONL)."),
     provider: Optional[str] = typer.Option(None, "--provider", "-p",
                                            help="Let this model write the queries (prompts/gen_queries.j2); "
@@ -132,7 +136,9 @@ def gen_queries_command(
                                                          "ground truth, translated to the ids of MAP (a built map)."),
 ) -> None:
     """Generate a query suite of the paper's five types from map instances."""
-    from ..evals.generate import generate_suite, parse_types
+    from ..evals.generate import check_options, generate_suite, parse_types
+
+    check_options(per_type, paraphrases, id_prefix)
 
     model = None
     if provider is not None:
@@ -150,11 +156,13 @@ def gen_queries_command(
         if len(maps) != 1:
             raise IesmError("--gt takes exactly one MAP (the map built from that frame directory)", "--gt")
         result, dropped = asyncio.run(generate_gt_suite(maps[0], gt, out, parse_types(types), per_type=per_type,
-                                                        seed=seed, model=model))
+                                                        seed=seed, model=model, paraphrases=paraphrases,
+                                                        id_prefix=id_prefix))
         print(f"{len(result.queries)} queries from the ground truth in {gt}; {dropped} dropped (target not "
               f"matched in {maps[0]})")
         return
-    result = asyncio.run(generate_suite(maps, out, parse_types(types), per_type=per_type, seed=seed, model=model))
+    result = asyncio.run(generate_suite(maps, out, parse_types(types), per_type=per_type, seed=seed, model=model,
+                                        paraphrases=paraphrases, id_prefix=id_prefix))
     for line in result.report_lines():
         print(line)
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import os
 import random
+import re
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -20,6 +21,7 @@ from ..errors import IesmError
 from ..providers.base import ChatOptions, Model
 from ..store.model import Instance, SceneMap
 from ..store.refs import resolve_map_path
+from .kinship import covers
 from .suite import MapRegistry, SuiteQuery, write_suite
 from .vocab import Vocabulary, room_name
 
@@ -39,9 +41,14 @@ TYPE_RULES = {
            "what it is used for (e.g. 'something to sit on'), plus the room and the given description.",
 }
 _VERBS = ("Find the {np}", "Go to the {np}", "Navigate to the {np}", "Take me to the {np}",
-          "Where is the {np}?", "I need the {np}", "Can you find the {np}?", "Head to the {np}")
+          "Where is the {np}?", "I need the {np}", "Can you find the {np}?", "Head to the {np}",
+          "Show me the {np}", "I'm looking for the {np}", "Could you take me to the {np}?")
 _ABSTRACT_VERBS = ("Find {np}", "Take me to {np}", "Navigate to {np}", "I need {np}", "Go to {np}",
-                   "Where can I find {np}?")
+                   "Where can I find {np}?", "Show me {np}", "I'm looking for {np}")
+_THINGS = ("object", "thing")
+#: draws of template wordings per wanted paraphrase before a target is given up
+_DRAWS = 8
+_PREFIX = re.compile(r"^[A-Za-z0-9_.\-]{1,40}$")
 _ROOM_FORMS = ("in the {room}", "in the {room} area")
 
 
@@ -62,7 +69,7 @@ class Target:
     category: str
     room: Optional[str]
     attributes: dict[str, str]  # kind (color, material) -> value
-    uses: list[str]             # gerund phrases from the affordance lexicon ("sitting", "storing clothes")
+    uses: list[str]             # what it is for, after "for" ("sitting on", "heating up leftovers")
 
 
 @dataclass
@@ -92,8 +99,12 @@ def top_categories(scene: SceneMap, vocab: Vocabulary, k: int = TOP_CATEGORIES) 
 
 
 def _target(inst: Instance, vocab: Vocabulary) -> Target:
-    return Target(inst=inst, category=vocab.spoken(inst.label), room=room_name(inst.room_label),
-                  attributes=vocab.attributes(inst.tags, inst.caption), uses=vocab.uses_of(inst.label))
+    category = vocab.spoken(inst.label)
+    attributes = vocab.attributes(inst.tags, inst.caption)
+    if set(attributes.get("material", "").split()) & set(category.split()):
+        del attributes["material"]  # "paper" made of paper says nothing
+    return Target(inst=inst, category=category, room=room_name(inst.room_label),
+                  attributes=attributes, uses=vocab.uses_of(inst.label))
 
 
 def answerable(t: Target, qtype: str) -> bool:
@@ -102,20 +113,25 @@ def answerable(t: Target, qtype: str) -> bool:
             and (qtype != "ard" or bool(t.uses)))
 
 
+def _kin(t: Target, o: Target) -> bool:
+    """`o` answers to `t`'s category name (`kinship.covers`: a desk chair counts for "the chair")."""
+    return o.category == t.category or covers(t.category, o.inst.label)
+
+
 def accept_ids(t: Target, qtype: str, others: Sequence[Target]) -> list[int]:
-    """Paper relaxations: (o) any instance of the category, (o,r) of the category in the named
-    room; otherwise the target alone."""
+    """Paper relaxations: (o) any instance answering to the category name, (o,r) any such
+    instance in the named room; otherwise the target alone."""
     if qtype == "o":
-        return sorted(o.inst.id for o in others if o.category == t.category)
+        return sorted(o.inst.id for o in others if _kin(t, o))
     if qtype == "or":
-        return sorted(o.inst.id for o in others if o.category == t.category and o.room == t.room)
+        return sorted(o.inst.id for o in others if _kin(t, o) and o.room == t.room)
     return [t.inst.id]
 
 
 def _describe(t: Target, qtype: str, others: Sequence[Target], rng: random.Random) -> dict[str, str]:
-    """The attribute subset that leaves the fewest look-alikes (same category, same room for
-    room types), smallest subset first."""
-    scope = [o for o in others if o.inst.id != t.inst.id and o.category == t.category
+    """The attribute subset that leaves the fewest look-alikes (instances answering to the
+    category name, in the same room for room types), smallest subset first."""
+    scope = [o for o in others if o.inst.id != t.inst.id and _kin(t, o)
              and ("r" not in qtype or o.room == t.room)]
     kinds = sorted(t.attributes)
     subsets = [[k] for k in kinds] + ([kinds] if len(kinds) > 1 else [])
@@ -125,21 +141,24 @@ def _describe(t: Target, qtype: str, others: Sequence[Target], rng: random.Rando
     return {k: t.attributes[k] for k in choice}
 
 
-def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocabulary, rng: random.Random) -> str:
-    """A query of `qtype` for `t` from the templates (command verb, description form, room phrase)."""
+def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocabulary, rng: random.Random,
+                   desc: Optional[dict[str, str]] = None) -> str:
+    """A query of `qtype` for `t` from the templates (command verb, description form, room phrase);
+    `desc` fixes the attributes said (else chosen by `_describe`)."""
     room = rng.choice(_ROOM_FORMS).format(room=t.room) if "r" in qtype else ""
-    desc = _describe(t, qtype, others, rng) if "d" in qtype else {}
+    if desc is None:
+        desc = _describe(t, qtype, others, rng) if "d" in qtype else {}
     adjectives = [vocab.adjective(k, v) for k, v in sorted(desc.items())]
-    if qtype == "ard":
-        use = rng.choice(t.uses)
+    if qtype == "ard":  # "something gray for lounging on in the living room", ...
+        use, said = rng.choice(t.uses), " ".join(adjectives)
         form = rng.randrange(3)
         if form == 0:
-            np = f"something {' and '.join(adjectives)} for {use}"
+            np = f"something {' and '.join(adjectives)} for {use} {room}"
         elif form == 1:
-            np = f"the {' '.join(adjectives)} object used for {use}"
+            np = f"the {said} {rng.choice(_THINGS)} used for {use} {room}"
         else:
-            np = f"something meant for {use}"
-            room = f"{room}, the {' '.join(adjectives)} one".lstrip(", ")
+            np = f"something {room} for {use}, the {said} one"
+        room = ""
         template = rng.choice(_ABSTRACT_VERBS)
     else:
         if desc and rng.random() < 0.5 and "material" in desc:
@@ -148,13 +167,31 @@ def template_query(t: Target, qtype: str, others: Sequence[Target], vocab: Vocab
         else:
             np = " ".join([*adjectives, t.category])
         template = rng.choice(_VERBS)
-    return template.format(np=f"{np} {room}".strip() if room else np)
+    return template.format(np=" ".join(f"{np} {room}".split()))
 
 
-def validate(text: str, t: Target, qtype: str, vocab: Vocabulary) -> Optional[str]:
-    """Why `text` is not a valid query of `qtype` for `t` (None when it is)."""
+def wordings(t: Target, qtype: str, others: Sequence[Target], vocab: Vocabulary, rng: random.Random,
+             k: int = 1) -> list[str]:
+    """`k` distinct valid template wordings of one intent (the same target and description),
+    [] when `_DRAWS * k` draws give fewer."""
+    desc = _describe(t, qtype, others, rng) if "d" in qtype else {}
+    out: list[str] = []
+    for _ in range(_DRAWS * k):
+        text = template_query(t, qtype, others, vocab, rng, desc)
+        if validate(text, t, qtype, vocab, out) is None:
+            out.append(text)
+            if len(out) == k:
+                return out
+    return []
+
+
+def validate(text: str, t: Target, qtype: str, vocab: Vocabulary, others: Sequence[str] = ()) -> Optional[str]:
+    """Why `text` is not a valid query of `qtype` for `t`, or not a new wording beside `others`
+    (None when it is valid)."""
     if not text or len(text) > 300:
         return "empty or longer than 300 characters"
+    if text.strip().lower() in {o.strip().lower() for o in others}:
+        return "repeats another wording of the same request"
     named = vocab.names_category(text, t.inst.label, tuple(t.inst.alt_labels))
     if qtype == "ard" and named:
         return f"names the category ({named!r})"
@@ -164,7 +201,9 @@ def validate(text: str, t: Target, qtype: str, vocab: Vocabulary) -> Optional[st
 
 
 async def _model_query(model: Model, library, t: Target, qtype: str, fallback: str, vocab: Vocabulary,
-                       seed: int, result: GenerationResult) -> str:
+                       seed: int, result: GenerationResult, written: Sequence[str] = ()) -> str:
+    """The model's query for `t`, a new wording beside `written` (the intent's earlier wordings);
+    `fallback` after `RETRIES` rejected retries."""
     from ..providers.jsonreply import JsonReplyError, parse_json_reply
 
     rejected = ""
@@ -175,14 +214,14 @@ async def _model_query(model: Model, library, t: Target, qtype: str, fallback: s
             room=t.room if "r" in qtype else None, description=desc if "d" in qtype else None,
             caption=t.inst.caption if "d" in qtype else "", tags=t.inst.tags if "d" in qtype else {},
             forbidden=sorted(vocab.forbidden(t.inst.label, tuple(t.inst.alt_labels))) if qtype == "ard" else [],
-            attempt=attempt, rejected=rejected)
+            attempt=attempt, rejected=rejected, written=list(written))
         try:
             reply = await model.acomplete(messages, ChatOptions(temperature=0.7, seed=seed + attempt))
             text = str(parse_json_reply(reply.text).get("query", "")).strip()
         except (IesmError, JsonReplyError) as exc:
             text, problem = "", str(exc)
         else:
-            problem = validate(text, t, qtype, vocab)
+            problem = validate(text, t, qtype, vocab, written)
         if problem is None:
             return text
         result.rejected += 1
@@ -191,17 +230,26 @@ async def _model_query(model: Model, library, t: Target, qtype: str, fallback: s
     return fallback
 
 
-async def _rewrite(model: Model, library, jobs: list[tuple[Target, str]], qtype: str, vocab: Vocabulary,
-                   seed: int, result: GenerationResult) -> list[tuple[Target, str]]:
-    """The model's query for each (target, template query) job, at most 8 calls at a time."""
+async def _rewrite(model: Model, library, jobs: list[tuple[Target, list[str]]], qtype: str, vocab: Vocabulary,
+                   seed: int, result: GenerationResult) -> list[tuple[Target, list[str]]]:
+    """The model's wordings for each (target, template wordings) job, one after another within a
+    job (each sees the earlier ones), at most 8 calls at a time; a fallback template wording that
+    repeats a model wording is replaced by an unused template wording."""
     sem = asyncio.Semaphore(8)
 
-    async def write(k: int, t: Target, fallback: str) -> str:
-        async with sem:
-            return await _model_query(model, library, t, qtype, fallback, vocab, seed * 1000 + k, result)
+    async def write(k: int, t: Target, templates: list[str]) -> list[str]:
+        texts: list[str] = []
+        for j, fallback in enumerate(templates):
+            async with sem:
+                text = await _model_query(model, library, t, qtype, fallback, vocab,
+                                          seed * 1000 + k * 100 + j, result, texts)
+            if text in texts:
+                text = next(w for w in templates if w not in texts)
+            texts.append(text)
+        return texts
 
-    texts = await asyncio.gather(*(write(k, t, text) for k, (t, text) in enumerate(jobs)))
-    return [(t, text) for (t, _), text in zip(jobs, texts, strict=True)]
+    return list(zip([t for t, _ in jobs],
+                    await asyncio.gather(*(write(k, t, texts) for k, (t, texts) in enumerate(jobs))), strict=True))
 
 
 def _map_ref(given: str, path: Path, out: Path) -> str:
@@ -211,29 +259,52 @@ def _map_ref(given: str, path: Path, out: Path) -> str:
     return Path(os.path.relpath(path, out.resolve().parent)).as_posix()
 
 
+def _append(result: GenerationResult, ref: str, base: str, qtype: str, target: int, texts: Sequence[str],
+            accept: Sequence[int]) -> None:
+    """One suite line per wording: a lone wording has id `base`; several form the group `base`
+    with ids `base-0`, `base-1`, ..."""
+    for j, text in enumerate(texts):
+        grouped = len(texts) > 1
+        result.queries.append(SuiteQuery(id=f"{base}-{j}" if grouped else base, map=ref, query=text, type=qtype,
+                                         target=target, accept=list(accept), group=base if grouped else None))
+
+
 def _add_spatial(result: GenerationResult, scene: SceneMap, ref: str, targets: list[Target],
-                 pool: list[Target], per_type: int, rng: random.Random) -> None:
-    """Append up to `per_type` type-`s` queries of one map to `result`."""
+                 pool: list[Target], per_type: int, rng: random.Random, paraphrases: int, prefix: str) -> None:
+    """Append up to `per_type` type-`s` intents of one map to `result`, `paraphrases` wordings each."""
     from ..store.mapstore import MapStore
     from .spatial_queries import spatial_queries
 
     by_id = {t.inst.id: t.category for t in targets}
     order = [t.inst.id for t in pool]
     rng.shuffle(order)
-    found = spatial_queries(MapStore(scene), [by_id[i.id] for i in scene.instances], order, per_type, rng)
+    found = spatial_queries(MapStore(scene), [by_id[i.id] for i in scene.instances], order, per_type, rng,
+                            wordings=paraphrases)
     for k, (ident, q) in enumerate(found):
-        result.queries.append(SuiteQuery(id=f"{scene.scene_id}-{SPATIAL}-{k:03d}", map=ref, query=q.text,
-                                         type=SPATIAL, target=ident, accept=list(q.accept)))
+        _append(result, ref, f"{prefix}{scene.scene_id}-{SPATIAL}-{k:03d}", SPATIAL, ident, q.texts, q.accept)
     result.counts[ref, SPATIAL] = len(found)
     result.shortfalls[ref, SPATIAL] = per_type - len(found)
 
 
-async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[str] = TYPES, *,
-                         per_type: int = 10, seed: int = 0, model: Model | None = None,
-                         vocab: Vocabulary | None = None) -> GenerationResult:
-    """Write a suite of `per_type` queries per type and map to `out` (atomically)."""
+def check_options(per_type: int, paraphrases: int, prefix: str) -> None:
+    """One-line errors for generation options out of range."""
     if per_type < 1:
         raise IesmError("--per-type must be at least 1", "--per-type")
+    if not 1 <= paraphrases <= 20:
+        raise IesmError(f"--paraphrases must be between 1 and 20, got {paraphrases}", "--paraphrases")
+    if prefix and not _PREFIX.match(prefix):
+        raise IesmError(f"--id-prefix must be 1-40 letters, digits or '_.-', got {prefix!r}", "--id-prefix")
+
+
+async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[str] = TYPES, *,
+                         per_type: int = 10, seed: int = 0, model: Model | None = None,
+                         vocab: Vocabulary | None = None, paraphrases: int = 1,
+                         id_prefix: str = "") -> GenerationResult:
+    """Write a suite of `per_type` intents per type and map to `out` (atomically). With
+    `paraphrases` K > 1 each intent gets K distinct wordings sharing a `group` (a target whose
+    templates give fewer is skipped); `id_prefix` starts every id and group (suites from two seeds
+    evaluated together)."""
+    check_options(per_type, paraphrases, id_prefix)
     out = Path(out)
     vocab = vocab or Vocabulary.load()
     library = None
@@ -252,23 +323,22 @@ async def generate_suite(maps: Sequence[str], out: str | Path, types: Sequence[s
         for qtype in types:
             rng = random.Random(f"{seed}|{scene.scene_id}|{qtype}")
             if qtype == SPATIAL:  # template queries only: a rewrite could change the relation
-                _add_spatial(result, scene, ref, targets, pool, per_type, rng)
+                _add_spatial(result, scene, ref, targets, pool, per_type, rng, paraphrases, id_prefix)
                 continue
             eligible = [t for t in pool if answerable(t, qtype)]
             rng.shuffle(eligible)
-            jobs = []
+            jobs: list[tuple[Target, list[str]]] = []
             for t in eligible:
                 if len(jobs) == per_type:
                     break
-                text = template_query(t, qtype, targets, vocab, rng)
-                if validate(text, t, qtype, vocab) is None:
-                    jobs.append((t, text))
+                texts = wordings(t, qtype, targets, vocab, rng, paraphrases)
+                if texts:
+                    jobs.append((t, texts))
             if model is not None:
                 jobs = await _rewrite(model, library, jobs, qtype, vocab, seed, result)
-            for k, (t, text) in enumerate(jobs):
-                result.queries.append(SuiteQuery(
-                    id=f"{scene.scene_id}-{qtype}-{k:03d}", map=ref, query=text, type=qtype,
-                    target=t.inst.id, accept=accept_ids(t, qtype, targets)))
+            for k, (t, texts) in enumerate(jobs):
+                _append(result, ref, f"{id_prefix}{scene.scene_id}-{qtype}-{k:03d}", qtype, t.inst.id, texts,
+                        accept_ids(t, qtype, targets))
             result.counts[ref, qtype] = len(jobs)
             result.shortfalls[ref, qtype] = per_type - len(jobs)
     write_suite(result.queries, out)

@@ -55,14 +55,16 @@ def translate(queries: Sequence[SuiteQuery], matches: dict[int, int], map_ref: s
             continue
         accept = sorted({matches[a] for a in q.accept if a in matches})
         kept.append(SuiteQuery(id=q.id, map=map_ref, query=q.query, type=q.type, target=matches[q.target],
-                               accept=accept))
+                               accept=accept, group=q.group))
     return kept, dropped
 
 
 async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | Path, types: Sequence[str], *,
-                            per_type: int = 10, seed: int = 0, model=None) -> tuple[GenerationResult, int]:
-    """Write a suite for `built_map` whose queries come from the ground truth in `frames_dir`;
-    returns the generation result and the number of queries dropped (no matched target)."""
+                            per_type: int = 10, seed: int = 0, model=None, paraphrases: int = 1,
+                            id_prefix: str = "") -> tuple[GenerationResult, int]:
+    """Write a suite for `built_map` whose queries come from the ground truth in `frames_dir`
+    (`paraphrases`, `id_prefix` as in `generate_suite`); returns the generation result and the
+    number of queries dropped (no matched target)."""
     out = Path(out)
     map_path = resolve_map_path(built_map)
     scene = open_map(map_path)
@@ -73,7 +75,7 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
         src = Path(tmp) / f"{gt.scene_id}_gt.json"
         src.write_text(json.dumps({"scene_id": gt.scene_id, "rooms": gt.rooms_list or None, "objects": objects}))
         result = await generate_suite([str(src)], Path(tmp) / "suite.jsonl", types, per_type=per_type, seed=seed,
-                                      model=model)
+                                      model=model, paraphrases=paraphrases, id_prefix=id_prefix)
     ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
     queries, dropped = translate(result.queries, match_instances(scene, gt), ref)
     starts = free_starts(gt, len(queries), seed)

@@ -3,9 +3,11 @@
 For a target with look-alikes (another instance of its spoken category), relations are tried in a
 seeded order: on / under / above a landmark (box geometry and shared grid cells), next to,
 closest to, farthest from a landmark category, and the largest / smallest / tallest of its
-category. A relation is kept only when exactly one instance of the category satisfies it (for
-superlatives: the best beats the runner-up by a clear margin); otherwise it is rejected and the
-next one is tried, so every accept set is the target alone.
+category. A landmark is named only when a single instance answers to its name (kinship as in
+`kinship.covers`: two lamps, or a lamp and a floor lamp, make "the lamp" ambiguous). A relation is
+kept only when exactly one instance of the category satisfies it (for superlatives: the best beats
+the runner-up by a clear margin); otherwise it is rejected and the next one is tried, so every
+accept set is the target alone.
 """
 
 from __future__ import annotations
@@ -16,33 +18,38 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from ..lexicon import load_lexicon
 from ..store import geometry as geo
 from ..store.mapstore import MapStore
-from ..understanding import label_concepts
+from .kinship import covers
 
 #: a superlative needs the runner-up this much worse (metres for distances, ratio for sizes)
 DISTANCE_MARGIN = 0.3
 SIZE_RATIO = 1.25
-#: landmark categories with more instances than this are too vague to name ("the chair")
-MAX_LANDMARKS = 2
 _PHRASES = {
     "on": ("on", "on top of", "sitting on"), "under": ("under", "beneath"), "above": ("above", "over"),
     "near": ("next to", "beside", "near"), "closest": ("closest to", "nearest to"),
     "farthest": ("farthest from", "furthest from"),
     "large": ("largest", "biggest"), "small": ("smallest",), "tall": ("tallest",),
 }
-_STARTS = ("Find the {np}", "Go to the {np}", "Take me to the {np}", "The {np}", "Navigate to the {np}")
+_STARTS = ("Find the {np}", "Go to the {np}", "Take me to the {np}", "The {np}", "Navigate to the {np}",
+           "Where is the {np}?", "Show me the {np}", "I need the {np}")
+#: draws of wordings per wanted paraphrase before a relation is given up
+_DRAWS = 8
 _NOT_LANDMARKS = {"wall", "floor", "ceiling", "doorway", "door frame", "rug", "carpet", "mat"}
 
 
 @dataclass(frozen=True)
 class SpatialQuery:
-    """A generated query, the relation it states and the ids its geometry accepts (the target)."""
+    """A generated query (one or more distinct wordings of it), the relation it states and the ids
+    its geometry accepts (the target)."""
 
-    text: str
+    texts: tuple[str, ...]
     relation: str
     accept: tuple[int, ...]
+
+    @property
+    def text(self) -> str:
+        return self.texts[0]
 
 
 class _Geometry:
@@ -55,13 +62,9 @@ class _Geometry:
         self.row = {int(i): r for r, i in enumerate(self.boxes.ids)}
 
     def of(self, category: str) -> np.ndarray:
-        """Rows a person naming `category` could mean: that spoken category, or a label denoting it
-        or a kind of it ("chair" also covers an "armchair")."""
-        lex = load_lexicon()
-        wanted = [c for c, w in label_concepts(category) if w >= 1.0]
-        kinds = {label: any(lex.concept_sim(q, c) >= 0.9 for q in wanted for c, w in label_concepts(label) if w >= 1.0)
-                 for label in set(self.cats.tolist())}
-        return np.flatnonzero((self.cats == category) | np.array([kinds[c] for c in self.cats], bool))
+        """Rows a person naming `category` could mean (`kinship.covers`: "chair" also covers an
+        "armchair")."""
+        return np.flatnonzero([covers(category, c) for c in self.cats])
 
     def stacked(self, rows: np.ndarray, field: str) -> np.ndarray:
         """(len(rows), N) bool: row's `on` / `under` geometry field lists instance j."""
@@ -84,9 +87,9 @@ def _best_by_margin(rows: np.ndarray, value: np.ndarray, target: int, margin: fl
     return bool(rows[order[0]] == target and value[order[1]] - value[order[0]] >= margin)
 
 
-def _try(g: _Geometry, target: int, relation: str, rng: random.Random) -> Optional[tuple[str, str]]:
-    """(object phrase without the target's name, relation) for `target` if `relation` singles it
-    out among its category, else None."""
+def _try(g: _Geometry, target: int, relation: str, rng: random.Random) -> Optional[str]:
+    """The landmark category ("" for a superlative) by which `relation` singles `target` out among
+    its category, else None."""
     cat = g.cats[target]
     rows = g.of(cat)
     tb = g.boxes.take(rows)
@@ -96,9 +99,10 @@ def _try(g: _Geometry, target: int, relation: str, rng: random.Random) -> Option
         low, high = sorted((magnitude[order[0]], magnitude[order[1]]))
         if rows[order[0]] != target or high < SIZE_RATIO * low:
             return None
-        return f"{rng.choice(_PHRASES[relation])} {cat}", relation
+        return ""
+    # "the lamp" names one landmark only when one instance answers to it (two lamps: ambiguous)
     marks = [c for c in dict.fromkeys(g.cats.tolist()) if c != cat and c not in _NOT_LANDMARKS
-             and 1 <= len(g.of(c)) <= MAX_LANDMARKS]
+             and len(g.of(c)) == 1 and not covers(c, cat) and not covers(cat, c)]
     rng.shuffle(marks)
     for mark in marks:
         lrows = g.of(mark)
@@ -116,14 +120,32 @@ def _try(g: _Geometry, target: int, relation: str, rng: random.Random) -> Option
             dist = (geo.xy_gap(tb, lb) + 0.25 * geo.center_distance(tb, lb)).min(axis=1)
             good = _best_by_margin(rows, dist if relation == "closest" else -dist, target, DISTANCE_MARGIN)
         if good:
-            return f"{cat} {rng.choice(_PHRASES[relation])} the {mark}", relation
+            return mark
     return None
 
 
+def _say(category: str, relation: str, mark: str, rng: random.Random) -> str:
+    """One wording: "Find the lamp closest to the sofa", "Where is the biggest plant?"."""
+    phrase = rng.choice(_PHRASES[relation])
+    np = f"{category} {phrase} the {mark}" if mark else f"{phrase} {category}"
+    return rng.choice(_STARTS).format(np=np)
+
+
+def _wordings(category: str, relation: str, mark: str, rng: random.Random, k: int) -> tuple[str, ...]:
+    """`k` distinct wordings of one relation, () when `_DRAWS * k` draws give fewer."""
+    out: dict[str, None] = {}
+    for _ in range(_DRAWS * k):
+        out[_say(category, relation, mark, rng)] = None
+        if len(out) == k:
+            return tuple(out)
+    return ()
+
+
 def spatial_queries(store: MapStore, categories: Sequence[str], pool: Sequence[int], per_map: int,
-                    rng: random.Random) -> list[tuple[int, SpatialQuery]]:
+                    rng: random.Random, wordings: int = 1) -> list[tuple[int, SpatialQuery]]:
     """Up to `per_map` (instance id, query) pairs for the instances `pool` (ids, tried in the
-    given order); `categories` is the spoken category of every instance in scene order."""
+    given order), each query with `wordings` distinct wordings; `categories` is the spoken category
+    of every instance in scene order."""
     g = _Geometry(store, categories)
     out: list[tuple[int, SpatialQuery]] = []
     relations = ["on", "under", "above", "near", "closest", "farthest", "large", "small", "tall"]
@@ -136,10 +158,9 @@ def spatial_queries(store: MapStore, categories: Sequence[str], pool: Sequence[i
         order = relations[:]
         rng.shuffle(order)
         for relation in order:
-            found = _try(g, target, relation, rng)
-            if found is not None:
-                phrase, rel = found
-                text = rng.choice(_STARTS).format(np=phrase)
-                out.append((int(ident), SpatialQuery(text=text, relation=rel, accept=(int(ident),))))
+            mark = _try(g, target, relation, rng)
+            texts = () if mark is None else _wordings(g.cats[target], relation, mark, rng, wordings)
+            if texts:
+                out.append((int(ident), SpatialQuery(texts=texts, relation=relation, accept=(int(ident),))))
                 break
     return out

@@ -1,20 +1,22 @@
 """The words query generation needs, from the shipped lexicon: what names a category (so an
 abstract query can avoid it, judged with the same lemmatiser the offline model reads with),
-what an object is used for (affordance cues), and colours/materials for descriptions."""
+what an object is used for (`purposes`), and colours/materials for descriptions."""
 
 from __future__ import annotations
 
 import re
-from collections import Counter
 from dataclasses import dataclass
 from typing import Optional
 
-from ..lexicon import Lexicon, load_lexicon, read_data
+from ..lexicon import Lexicon, load_lexicon
+from .purposes import purposes_of
 
 _SPACES = re.compile(r"[\s_\-]+")
 _ROOM_NUMBER = re.compile(r"\s*\d+$")
-_VOWELS = set("aeiou")
 _MATERIAL_ADJECTIVES = {"wood": "wooden", "wool": "woollen", "gold": "golden"}
+_PARTS = re.compile(r"\s*(?:,|\band\b)\s*")
+#: at most this many words of a kind in a description ("black and white", one material)
+_MOST = {"color": 2, "material": 1}
 
 
 def normalise(text: str) -> str:
@@ -29,45 +31,13 @@ def room_name(label: Optional[str]) -> Optional[str]:
     return _ROOM_NUMBER.sub("", normalise(label)) or None
 
 
-def gerund(phrase: str) -> str:
-    """`sit` -> `sitting`, `store clothes` -> `storing clothes`, `lie down` -> `lying down`."""
-    first, _, rest = phrase.partition(" ")
-    if first.endswith("ing"):
-        word = first
-    elif first.endswith("ie"):
-        word = first[:-2] + "ying"
-    elif first.endswith("e") and not first.endswith("ee") and len(first) > 2:
-        word = first[:-1] + "ing"
-    elif (len(first) in (3, 4) and first[-1] not in _VOWELS | set("wxy") and first[-2] in _VOWELS
-          and first[-3] not in _VOWELS):
-        word = first + first[-1] + "ing"
-    else:
-        word = first + "ing"
-    return f"{word} {rest}".strip()
-
-
 @dataclass
 class Vocabulary:
     lex: Lexicon
-    uses: dict[str, list[str]]  # canonical category -> "for ..." phrases, one per affordance entry
 
     @classmethod
     def load(cls) -> "Vocabulary":
-        lex = load_lexicon()
-        entries = read_data("affordances.json")["entries"]
-        groups = read_data("categories.json")["groups"]
-        # a cue's first word is a noun when category names start with it ("coffee table") and no
-        # other cue uses it as a verb taking an object ("wash hand")
-        nouns = {normalise(s).split(" ")[0] for c, syns in groups.items() for s in (c, *syns)}
-        verbs = Counter(normalise(c).split(" ")[0] for e in entries for c in e["cues"] if " " in c.strip())
-        uses: dict[str, list[str]] = {}
-        for entry in entries:
-            cue = normalise(entry["cues"][0])
-            first = cue.split(" ")[0]
-            noun = first in nouns and verbs[first] == (1 if " " in cue else 0)
-            for category in entry["core"]:
-                uses.setdefault(category, []).append(cue if noun else gerund(cue))
-        return cls(lex, uses)
+        return cls(load_lexicon())
 
     def _lemmas(self, text: str) -> list[str]:
         return [self.lex.lemma(t) for t in self.lex.tokens(normalise(text))]
@@ -108,19 +78,27 @@ class Vocabulary:
         return None
 
     def uses_of(self, label: str) -> list[str]:
-        """What `label` is used for, as "something for ..." phrases ("sitting", "storing clothes")."""
-        return list(dict.fromkeys(self.uses.get(self.canonical(label), [])))
+        """What `label` is for, as phrases that follow "for" ("sitting on", "heating up leftovers"):
+        `purposes.PURPOSES` of its category or of a more general one."""
+        category = self.canonical(label)
+        return purposes_of([category, *sorted(self.lex.ancestors.get(category, ()))])
 
     def attributes(self, tags: dict[str, str], caption: str) -> dict[str, str]:
-        """Colour and material of an instance: its tags, else the first the lexicon finds in its caption."""
+        """Colour and material of an instance as a person says them: its tags, else the first the
+        lexicon finds in its caption; only the parts the lexicon reads as that kind ("light colored",
+        "high gloss material" dropped), at most two colours and one material, no material word
+        already said by the colour ("dark wood")."""
         spans = self.lex.scan(self._lemmas(caption))
-        out = {}
+        out: dict[str, str] = {}
         for kind in ("color", "material"):
             value = tags.get(kind) or (tags.get("colour") if kind == "color" else None)
             if not value:
                 value = next((s.values(kind)[0] for s in spans if s.has(kind)), None)
-            if value:
-                out[kind] = " and ".join(p for p in map(normalise, value.split(",")) if p)
+            said = set(out.get("color", "").split())
+            parts = [p for p in dict.fromkeys(_PARTS.split(normalise(value or ""))) if p
+                     and any(s.has(kind) for s in self.lex.scan(self._lemmas(p))) and not set(p.split()) & said]
+            if parts:
+                out[kind] = " and ".join(parts[:_MOST[kind]])
         return out
 
     @staticmethod
