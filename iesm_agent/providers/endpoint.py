@@ -73,8 +73,7 @@ class EndpointFacts:
     window_source: Optional[str] = None
     probed: bool = False
     rejections: list[str] = field(default_factory=list)
-    _chars: int = 0
-    _tokens: int = 0
+    _ratio: Optional[float] = None
     _lock: Optional[asyncio.Lock] = None
 
     def lock(self) -> asyncio.Lock:
@@ -85,18 +84,16 @@ class EndpointFacts:
 
     @property
     def chars_per_token(self) -> float:
-        """Characters per token measured from the server's usage (total over all calls),
-        `DEFAULT_CHARS_PER_TOKEN` until a prompt of 500+ characters has been counted."""
-        if self._chars < 500 or self._tokens <= 0:
-            return DEFAULT_CHARS_PER_TOKEN
-        return self._chars / self._tokens
+        """Characters per token measured from the server's usage: the fewest seen in any prompt
+        of 500+ characters (texts differ: the densest one errs towards shrinking), else
+        `DEFAULT_CHARS_PER_TOKEN`."""
+        return self._ratio or DEFAULT_CHARS_PER_TOKEN
 
     def observe(self, messages: list[Message], prompt_tokens: int) -> None:
         """Calibrate from one prompt the server counted as `prompt_tokens`."""
-        tokens = prompt_tokens - MESSAGE_OVERHEAD_TOKENS * len(messages)
-        if tokens > 0:
-            self._chars += text_chars(messages)
-            self._tokens += tokens
+        chars, tokens = text_chars(messages), prompt_tokens - MESSAGE_OVERHEAD_TOKENS * len(messages)
+        if chars >= 500 and tokens > 0:
+            self._ratio = min(self._ratio or chars / tokens, chars / tokens)
 
     def estimate(self, messages: list[Message]) -> int:
         """Tokens `messages` will take at this endpoint (10 % margin over the calibration)."""
