@@ -101,3 +101,24 @@ def test_embeddings_rank_queries_the_lexicon_does_not_know(encoder):
     ranked = json.loads(OfflineModel(use_embeddings=True).complete(
         lib.render("spr.j2", query=query, candidates=CANDS, kappa=2)).text)["ranked_instance_ids"]
     assert 10 in ranked
+
+
+def test_encoder_loading_is_reported_apart_from_query_latency(apartment_store, monkeypatch):
+    import time
+
+    from iesm_agent import embeddings
+    from iesm_agent.retrieval import Retriever
+
+    def slow_load():
+        time.sleep(1.0)
+        return None  # loads "nothing": the query then runs on lexicons
+
+    monkeypatch.setattr(embeddings, "_STATE", {})
+    monkeypatch.setattr(embeddings, "_load", slow_load)
+    monkeypatch.delenv("IESM_EMBEDDINGS", raising=False)
+    retriever = Retriever(apartment_store, provider=OfflineModel())
+    started = time.perf_counter()
+    first = retriever.ask("the yellow photo book")  # an (o,d) query asks for the encoder
+    wall_ms = (time.perf_counter() - started) * 1000
+    assert first.load_ms >= 1000 and first.latency_ms <= wall_ms - first.load_ms + 1
+    assert retriever.ask("the yellow photo book").load_ms == 0  # loaded (or failed) once per process

@@ -146,9 +146,13 @@ def test_call_tool_validates_and_dispatches(service, apartment_store):
     assert (goal["label"], goal["room"]) == ("lamp", "bedroom")
     for name, arguments, message in [
         ("teleport", {}, "unknown tool 'teleport'"),
-        ("get_instance", {"instance_id": "seven"}, "bad arguments for get_instance: instance_id:"),
-        ("get_instance", {}, "instance_id: Field required"),
-        ("list_rooms", {"floor": 2}, "floor: Extra inputs are not permitted"),
+        ("get_instance", {"instance_id": "seven"},
+         r"^bad argument for get_instance: instance_id \(input should be a valid integer, unable to parse"),
+        ("get_instance", {}, r"^bad argument for get_instance: instance_id is missing$"),
+        ("list_rooms", {"floor": 2}, r"^bad argument for list_rooms: floor is not an argument of list_rooms$"),
+        ("instances_near", {"x": "left", "y": 1.0, "radius": [2]},
+         r"^bad arguments for instances_near: x \(input should be a valid number.*\); "
+         r"radius \(input should be a valid number\)$"),
         ("get_instance", {"instance_id": 4242}, "unknown instance id 4242"),
     ]:
         with pytest.raises(IesmError, match=message):

@@ -82,7 +82,8 @@ def _print_human(result, explain: bool) -> None:
         for expert, ids in result.experts.items():
             picks = ", ".join(f"#{i} {result.names.get(i, '?')}" for i in ids) or "(nothing)"
             lines.append(f"  {expert}: {picks}")
-    lines.append(f"{result.latency_ms:.0f} ms, {len(result.calls)} calls, {result.cache_hits} cached")
+    loading = f" (+ {result.load_ms:.0f} ms loading the sentence encoder)" if result.load_ms >= 1 else ""
+    lines.append(f"{result.latency_ms:.0f} ms{loading}, {len(result.calls)} calls, {result.cache_hits} cached")
     print("\n".join(lines))
     if result.calls and all(c.error for c in result.calls):
         print(f"error: all {len(result.calls)} model calls failed; the first: {result.calls[0].error}",

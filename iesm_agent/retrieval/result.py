@@ -64,7 +64,10 @@ class RetrievalResult(BaseModel):
     candidate_recall: bool | None = None
     #: candidates selected before the set was cut to fit the model's context window (None: not cut)
     candidates_before_fit: int | None = None
+    #: wall time of the query (ms), without `load_ms`
     latency_ms: float = 0.0
+    #: time spent loading models during the query (ms; the sentence encoder's first load), not in latency_ms
+    load_ms: float = 0.0
     tokens: int = 0
     cache_hits: int = 0
 

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..config import RetrievalConfig
+from ..embeddings import load_seconds
 from ..prompting import Fenced, PromptLibrary
 from ..providers import Model, get_model
 from ..understanding import QueryInfo, analyse_query
@@ -50,7 +51,7 @@ class Retriever:
         """Retrieve the instance `query` refers to; `target` (ground truth) records candidate recall.
         When the model's context window is known (or learnt from a refusal, then the query runs
         once more) the candidate set is cut, best candidates kept, until every prompt fits."""
-        started = time.perf_counter()
+        started, loaded_before = time.perf_counter(), load_seconds()
         info = analyse_query(query)
         selected = select_candidates(self.store, query, info, self.config.max_candidates, target)
         candidates = await self._fit(query, info, selected, target)
@@ -61,7 +62,10 @@ class Retriever:
                 candidates = refit
                 outcome, session = await self._run(query, info, candidates)
         before = len(selected.ids) if candidates.ids != selected.ids else None
-        return self._result(query, outcome, session, candidates, target, started, before)
+        result = self._result(query, outcome, session, candidates, target, started, before)
+        result.load_ms = (load_seconds() - loaded_before) * 1000.0  # the encoder loaded for this query
+        result.latency_ms -= result.load_ms
+        return result
 
     async def _run(self, query: str, info: QueryInfo, candidates: Candidates,
                    dry_run: bool = False) -> tuple[Outcome, Session]:

@@ -3,8 +3,10 @@
 Tools are `MapService.tools()`; each served map is also a JSON resource `iesm://maps/<name>`.
 A tool's listed input schema is the one `tool_specs()` gives (the same for `iesm tools` and
 `MapStore.tool_specs()`); the SDK validates arguments against a pydantic model of the same
-signature, so a wrong argument type is a tool error naming the argument. `IesmError`s (unknown
-map or instance, over-long query) become tool errors carrying their message.
+signature, and a wrong argument is a tool error in one sentence naming it
+(`results.argument_problem`). `IesmError`s (unknown map or instance, over-long query) become
+tool errors carrying their message. Results are one JSON text block; `find_goal` also returns
+them as structured content under an output schema (`results.FindGoalResult`).
 
 Transports: stdio (protocol only on stdout; logs go to stderr) and streamable HTTP at `/mcp`,
 with DNS-rebinding protection and, when a token is given, `Authorization: Bearer <token>`
@@ -28,13 +30,18 @@ from mcp.server.mcpserver import MCPServer
 from mcp.server.mcpserver.exceptions import ToolError
 from mcp.server.mcpserver.tools import Tool
 from mcp.server.transport_security import TransportSecuritySettings
+from mcp.types import CallToolResult, TextContent
+from pydantic import ValidationError
 
 from .. import __version__
 from ..errors import IesmError
 from ..store.tools import function_schema
+from .results import FindGoalResult, argument_problem
 from .tools import MapService
 
 MCP_PATH = "/mcp"
+#: tools whose result is also structured content, with the model giving its output schema
+OUTPUT_MODELS = {"find_goal": FindGoalResult}
 LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1")
 _INSTRUCTIONS = ("Goal retrieval over instance-enriched semantic maps: call find_goal with the user's sentence "
                  "to get the map instance it refers to; the other tools browse a map's rooms and instances.")
@@ -52,21 +59,40 @@ class StaticTokenVerifier:
         return None
 
 
+class _Tool(Tool):
+    """An SDK tool whose argument errors read as one sentence naming the argument."""
+
+    async def run(self, arguments: dict[str, Any], context: Any, convert_result: bool = False) -> Any:
+        try:
+            return await super().run(arguments, context, convert_result)
+        except ToolError as exc:
+            if isinstance(exc.__cause__, ValidationError) and exc.__cause__.title.endswith("Arguments"):
+                raise ToolError(argument_problem(self.name, exc.__cause__)) from exc.__cause__
+            raise
+
+
 def _as_mcp_tool(fn: Callable[..., Any]) -> Tool:
-    """An SDK `Tool` for `fn`: the result as one JSON text block, `IesmError` -> `ToolError`, the
-    listed schema from `function_schema`."""
+    """An SDK `Tool` for `fn`: the result as one JSON text block (and as structured content
+    when `OUTPUT_MODELS` names the tool), `IesmError` -> `ToolError`, the listed input schema
+    from `function_schema`."""
+    spec = function_schema(fn)
+    output_model = OUTPUT_MODELS.get(spec["name"])
 
     @functools.wraps(fn)
-    async def call(**arguments: Any) -> str:
+    async def call(**arguments: Any) -> Any:
         try:
             result = await fn(**arguments)
         except IesmError as exc:
             raise ToolError(str(exc)) from exc
-        return json.dumps(result, indent=1)  # one text block, also for lists
+        text = [TextContent(type="text", text=json.dumps(result, indent=1))]  # one block, also for lists
+        return CallToolResult(content=text, structured_content=result if output_model else None)
 
-    spec = function_schema(fn)
-    tool = Tool.from_function(call, name=spec["name"], description=spec["description"], structured_output=False)
-    return tool.model_copy(update={"parameters": spec["parameters"]})
+    tool = _Tool.from_function(call, name=spec["name"], description=spec["description"], structured_output=False)
+    update: dict[str, Any] = {"parameters": spec["parameters"]}
+    if output_model is not None:
+        update["fn_metadata"] = tool.fn_metadata.model_copy(
+            update={"output_model": output_model, "output_schema": output_model.model_json_schema()})
+    return tool.model_copy(update=update)
 
 
 def build_server(service: MapService, token: str | None = None) -> MCPServer:

@@ -7,8 +7,10 @@ without edits) with one extra optional `map` argument. Schemas come from `store.
 the function behind `MapStore.tool_specs()`.
 
 All tools are coroutines run on the server's event loop: the maps, the retrievers and their
-caches are only ever touched from that one thread, so concurrent calls need no locks; a remote
-model's I/O still overlaps because `Retriever.aask` awaits it.
+caches are only ever touched from that one thread, so they need no locks. Model calls that
+compute locally (the offline model, with its sentence embeddings) run on a bounded pool of worker
+threads (`workers.WorkerPool`, one per core) so the loop stays free; a remote model's I/O
+overlaps on the loop because `Retriever.aask` awaits it.
 """
 
 from __future__ import annotations
@@ -25,6 +27,8 @@ from ..errors import IesmError
 from ..store import MapStore
 from ..store import mapstore as mapstore_module
 from ..store.tools import function_schema
+from .results import FindGoalResult, Ranked, argument_problem, place
+from .workers import OffLoopModel, WorkerPool
 
 #: longest query (or other text argument) a tool accepts, in characters
 MAX_QUERY_CHARS = 2000
@@ -41,13 +45,16 @@ class MapService:
 
     `maps` maps a name (the map's scene id) to its `MapStore`; the first is the default.
     `providers` lists the model specs callers may pick (the first is the default): a caller
-    cannot make the server spend another endpoint's credentials."""
+    cannot make the server spend another endpoint's credentials. `workers`: threads computing
+    local model calls (default: the cores)."""
 
-    def __init__(self, maps: dict[str, MapStore] | None = None, providers: tuple[str, ...] = ("offline",)):
+    def __init__(self, maps: dict[str, MapStore] | None = None, providers: tuple[str, ...] = ("offline",),
+                 workers: int | None = None):
         if not providers:
             raise IesmError("at least one provider is required", None, "providers")
         self.maps = dict(maps or {})
         self.providers = tuple(providers)
+        self.pool = WorkerPool(workers)
         self._retrievers: dict[tuple[str, str, str], Any] = {}
         self._planners: dict[str, Any] = {}
 
@@ -91,16 +98,23 @@ class MapService:
             return self._retrievers[key]
         # remote answers go to the response cache, as with `iesm ask`
         fresh = Retriever(store, provider=provider, method=method, cache=True)
+        if not fresh.model.cacheable:  # answers locally: compute on the worker pool
+            fresh.model = OffLoopModel(fresh.model, self.pool)
         # kept under the normalised method ("experts: obj,obj" -> "experts:obj"): a bounded set
         return self._retrievers.setdefault((key[0], fresh.method, provider), fresh)
 
     async def warm_up(self) -> None:
-        """Load the embedding model (when installed), answer a descriptive query per map with the
-        default provider and build the planning grids, so that the first caller pays no start-up
-        cost. A failing warm-up query (a dead endpoint) is reported on stderr, not raised."""
-        from ..embeddings import get_encoder
+        """Load the embedding model (when installed; saying so on stderr, with the time it took),
+        answer a descriptive query per map with the default provider and build the planning
+        grids, so that the first caller pays no start-up cost. A failing warm-up query (a dead
+        endpoint) is reported on stderr, not raised."""
+        from ..embeddings import encoder_name, get_encoder, load_seconds
 
-        get_encoder()
+        if encoder_name() is not None:
+            print(f"iesm serve: loading the sentence encoder {encoder_name()} ...", file=sys.stderr, flush=True)
+            encoder = await self.pool.run(get_encoder)
+            print(f"iesm serve: sentence encoder {'loaded' if encoder else 'unavailable'} in {load_seconds():.1f} s"
+                  + (f" ({encoder.backend.kind})" if encoder else ""), file=sys.stderr, flush=True)
         for name in self.maps:
             try:
                 await self.find_goal(WARM_UP_QUERY, map=name)
@@ -120,18 +134,20 @@ class MapService:
         return self._planners[name]
 
     async def aclose(self) -> None:
-        """Close the retrievers' model connections."""
+        """Close the retrievers' model connections and stop the worker threads."""
         for retriever in self._retrievers.values():
             await retriever.aclose()
         self._retrievers.clear()
+        self.pool.shutdown()
 
     # ------------------------------------------------------------------ tools
     async def find_goal(self, query: str, map: Optional[str] = None, method: str = "mtefr",
                         provider: Optional[str] = None) -> dict:
-        """Find the map instance a sentence refers to (MTEFR), with the evidence in short.
+        """Find the map instance a sentence refers to (MTEFR), with where it is and the evidence in short.
 
-        Returns the instance id, label, room and caption, the gate weights, each expert's
-        top picks and the head of the fused ranking.
+        Returns the instance id, label, room and caption, its position [x, y, z] and box
+        (centre, size; metres), the gate weights, each expert's top picks and the head of the
+        fused ranking (goal first, then the alternatives, each with its score and box).
 
         Args:
             query: the sentence naming the goal object, e.g. "the red chair in the office"
@@ -150,18 +166,19 @@ class MapService:
         if res.calls and len(failed_calls) == len(res.calls):
             raise IesmError(f"all {len(res.calls)} model calls failed; the first: {failed_calls[0].error}",
                             provider or self.providers[0], "provider")
-        name = res.names.get
-        return {
-            "map": retriever.store.scene.scene_id, "query": res.query, "method": res.method,
-            "found": res.instance_id is not None, "instance_id": res.instance_id, "label": res.label,
-            "room": res.room, "caption": res.caption,
-            "gate": {e: round(w, 3) for e, w in sorted(res.gate.items(), key=lambda kv: -kv[1])},
-            "experts": {e: [{"id": i, "name": name(i, "?")} for i in ids] for e, ids in res.experts.items()},
-            "deciding_expert": res.deciding_expert,
-            "ranking": [{"id": i, "name": name(i, "?"), "score": round(res.scores.get(i, 0.0), 3)}
-                        for i in res.ranking[:RANKING_SHOWN]],
-            "failures": res.failures, "latency_ms": round(res.latency_ms, 2),
-        }
+        name, store = res.names.get, retriever.store
+        box = place(store, res.instance_id) if res.instance_id is not None else None
+        ranking = [Ranked(id=i, name=name(i, "?"), score=round(res.scores[i], 3), box=place(store, i))
+                   for i in res.ranking[:RANKING_SHOWN] if res.scores.get(i, 0.0) > 0]
+        return FindGoalResult(
+            map=store.scene.scene_id, query=res.query, method=res.method, found=res.instance_id is not None,
+            instance_id=res.instance_id, label=res.label, room=res.room, caption=res.caption,
+            position=box.center if box else None, box=box,
+            gate={e: round(w, 3) for e, w in sorted(res.gate.items(), key=lambda kv: -kv[1])},
+            experts={e: [{"id": i, "name": name(i, "?")} for i in ids] for e, ids in res.experts.items()},
+            deciding_expert=res.deciding_expert, ranking=ranking, failures=res.failures,
+            latency_ms=round(res.latency_ms, 2),
+        ).model_dump(mode="json")
 
     async def list_maps(self) -> list[dict]:
         """The served maps: name, instance and room counts."""
@@ -228,8 +245,7 @@ class MapService:
         try:
             valid = arguments_model(tool).model_validate(arguments)
         except ValidationError as exc:
-            problems = "; ".join(f"{'.'.join(map(str, e['loc'])) or 'arguments'}: {e['msg']}" for e in exc.errors())
-            raise IesmError(f"bad arguments for {name}: {problems}", None, "arguments") from None
+            raise IesmError(argument_problem(name, exc)) from None
         return await tool(**{field: getattr(valid, field) for field in type(valid).model_fields})
 
     def tools(self) -> list[Callable[..., Any]]:
