@@ -1,7 +1,6 @@
-"""Instance-level 2.5D open-vocabulary mapping from RGB-D frames (paper Sec. 3.1), its 2D
-point-wise baseline and its evaluation (Sec. 4.1).
+"""Instance-level 2.5D open-vocabulary mapping from RGB-D frames (paper Sec. 3.1).
 
-`build.build_map(FrameSet) -> SceneMap` runs the pipeline; `evaluate.evaluate_map(scene, gt,
-frames_dir) -> dict` scores a map; `matching.match_instances(scene, gt)` pairs built and
-ground-truth instances (top-down IoU > 0.5).
+`build.build_map(FrameSet) -> SceneMap` runs the pipeline. Scoring a built map (Sec. 4.1), the
+matching of built and ground-truth instances and the 2D point-wise baseline live in `evals/`
+(`evals.mapping`, `evals.matching`, `evals.baseline2d`).
 """
