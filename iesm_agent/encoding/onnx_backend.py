@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib.util
 import json
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -104,13 +105,16 @@ def _usable(path: Path, checksum_of: Path | None = None) -> tuple[OnnxBackend | 
         expected = json.loads(checksum_path(checksum_of or path).read_text())
     except (OSError, ValueError):
         return None, "its checksum file is missing or unreadable"
-    if file_checksum(path.read_bytes()) != expected:
-        return None, "its content does not match its checksum (damaged)"
-    try:
-        backend = OnnxBackend(path)
-    except Exception as exc:  # onnxruntime refuses a truncated or garbled file with various errors
-        return None, f"onnxruntime cannot read it ({str(exc).splitlines()[0][:160]})"
-    why = backend.problem()
+    with ThreadPoolExecutor(1) as pool:  # the checksum (GIL released) overlaps the session load
+        actual = pool.submit(lambda: file_checksum(path.read_bytes()))
+        try:
+            backend: OnnxBackend | None = OnnxBackend(path)
+            why = ""
+        except Exception as exc:  # onnxruntime refuses a truncated or garbled file with various errors
+            backend, why = None, f"onnxruntime cannot read it ({str(exc).splitlines()[0][:160]})"
+        if actual.result() != expected:
+            return None, "its content does not match its checksum (damaged)"
+    why = why or backend.problem()
     return (None, why) if why else (backend, "")
 
 
