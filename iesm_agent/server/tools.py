@@ -15,6 +15,7 @@ overlaps on the loop because `Retriever.aask` awaits it.
 
 from __future__ import annotations
 
+import asyncio
 import importlib.util
 import inspect
 import sys
@@ -55,6 +56,7 @@ class MapService:
         self.maps = dict(maps or {})
         self.providers = tuple(providers)
         self.pool = WorkerPool(workers)
+        self._slots: tuple[asyncio.AbstractEventLoop, asyncio.Semaphore] | None = None
         self._retrievers: dict[tuple[str, str, str], Any] = {}
         self._planners: dict[str, Any] = {}
 
@@ -133,6 +135,15 @@ class MapService:
             self._planners[name] = PlanningGrid(store.scene)
         return self._planners[name]
 
+    def _admission(self) -> asyncio.Semaphore:
+        """At most `pool.size` queries of local models at once (per event loop): with more, all
+        of them would share the cores and finish late together; this way the early ones finish
+        early and the throughput is the same."""
+        loop = asyncio.get_running_loop()
+        if self._slots is None or self._slots[0] is not loop:
+            self._slots = (loop, asyncio.Semaphore(self.pool.size))
+        return self._slots[1]
+
     async def aclose(self) -> None:
         """Close the retrievers' model connections and stop the worker threads."""
         for retriever in self._retrievers.values():
@@ -161,7 +172,11 @@ class MapService:
             raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
                             None, "query")
         retriever = self.retriever(map, method, provider)
-        res = await retriever.aask(query)
+        if isinstance(retriever.model, OffLoopModel):
+            async with self._admission():  # first come, first served on the worker pool
+                res = await retriever.aask(query)
+        else:
+            res = await retriever.aask(query)
         failed_calls = [c for c in res.calls if c.error]
         if res.calls and len(failed_calls) == len(res.calls):
             raise IesmError(f"all {len(res.calls)} model calls failed; the first: {failed_calls[0].error}",
