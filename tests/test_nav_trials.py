@@ -80,7 +80,7 @@ def test_iesm_eval_reports_nsr(tmp_path, monkeypatch, capsys):
     suite = tmp_path / "suite.jsonl"
     suite.write_text("".join(json.dumps(line) + "\n" for line in lines))
     assert run(["eval", str(suite), "-o", str(tmp_path / "no-gt")]) == 0   # no ground truth: no N-SR
-    assert all("nav_success" not in json.loads(line) for line in (tmp_path / "no-gt" / "results.jsonl").open())
+    assert all(json.loads(line).get("nav_success") is None for line in (tmp_path / "no-gt" / "results.jsonl").open())
     assert run(["eval", str(suite), "--gt", str(frames), "-o", str(tmp_path / "run")]) == 0
     records = {json.loads(line)["id"]: json.loads(line) for line in (tmp_path / "run" / "results.jsonl").open()}
     assert all(r["correct"] for r in records.values())
