@@ -32,3 +32,16 @@ def test_cli_reference_lists_every_command_and_option():
                 if flag != "--help" and not re.search(rf"(?<![\w-]){re.escape(flag)}(?![\w-])", sections[name]):
                     missing.append(f"iesm {name} {flag}")
     assert not missing, f"docs/cli.md lacks {missing}; {REGENERATE}"
+
+
+def test_relative_links_in_the_guide_and_docs_resolve():
+    pages = [REPO / "README.md", REPO / "evals" / "README.md", *sorted((REPO / "docs").rglob("*.md"))]
+    broken = []
+    for page in pages:
+        for target in re.findall(r"\]\(([^)\s]+)\)", page.read_text(encoding="utf-8")):
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                continue
+            path = target.split("#")[0]
+            if not (page.parent / path).exists():
+                broken.append(f"{page.relative_to(REPO)} -> {target}")
+    assert not broken, broken
