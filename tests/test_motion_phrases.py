@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from iesm_agent.embeddings import encoder_name
 from iesm_agent.providers.offline.spatial_parse import parse_query
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore, open_map
@@ -20,12 +21,16 @@ def retriever():
 #: reading still takes "round" after a motion verb as a shape, "sit" in "go sit by" as the function
 #: asked for, and an unknown verb ("zip") as the target
 _GAP = pytest.mark.xfail(strict=True, reason="known gap in the shared query reading (see comment above)")
+#: the unknown verb is taken as the target only when the sentence encoder grounds it (the `embeddings`
+#: extra); without the encoder the query is answered right
+_ENCODER_GAP = pytest.mark.xfail(encoder_name() is not None, strict=True,
+                                 reason="known gap in the shared query reading (see comment above)")
 MOTION = [("make your way over to the bookshelf, thanks", "bookshelf"),
           ("could you pull up to the desk", "desk"),
           ("stop by the refrigerator for me", "refrigerator"),
           pytest.param("come round to the bed", "bed", marks=_GAP),
           ("walk up to the wardrobe", "wardrobe"),
-          pytest.param("zip over to the printer", "printer", marks=_GAP),
+          pytest.param("zip over to the printer", "printer", marks=_ENCODER_GAP),
           pytest.param("go sit by the bathtub", "bathtub", marks=_GAP),
           ("take me across to the mirror in the hallway", "mirror")]
 MOTION_PARSE = [getattr(m, "values", m) for m in MOTION]  # the parse is right in every case
