@@ -117,3 +117,34 @@ async def test_plan_path_to_the_found_goal(apartment_store):
                                    ({"instance_id": 1, "start": "kitchen"}, "start")]:
             bad = await client.call_tool("plan_path", arguments)
             assert bad.is_error and message in bad.content[0].text
+
+
+async def test_find_goal_is_structured_content_under_its_output_schema(apartment_store):
+    from iesm_agent.server.results import FindGoalResult
+
+    async with Client(build_server(MapService({"apartment": apartment_store}))) as client:
+        tools = {t.name: t for t in (await client.list_tools()).tools}
+        schema = tools["find_goal"].output_schema
+        assert schema["type"] == "object" and {"position", "box", "ranking"} <= set(schema["properties"])
+        assert tools["list_rooms"].output_schema is None  # text only
+        result = await client.call_tool("find_goal", {"query": "the red chair in the office"})
+        assert result.structured_content == _payload(result)  # the text block says the same
+        goal = FindGoalResult.model_validate(result.structured_content)
+        assert goal.position == goal.box.center and len(goal.position) == 3
+        assert goal.ranking[0].id == goal.instance_id and all(r.score > 0 for r in goal.ranking)
+
+
+@pytest.mark.parametrize("arguments, message", [
+    ({"instance_id": 1, "start": "kitchen"}, "bad argument for plan_path: start (input should be a valid tuple)"),
+    ({"start": [0.5, 0.5]}, "bad argument for plan_path: instance_id is missing"),
+    ({"instance_id": "one", "start": [0.5, 0.5]},
+     "bad argument for plan_path: instance_id (input should be a valid integer, unable to parse string as an integer)"),
+])
+async def test_argument_errors_are_one_sentence_naming_the_argument(apartment_store, arguments, message):
+    from iesm_agent.server.tools import navigation_available
+
+    if not navigation_available():
+        pytest.skip("navigation extra (OpenCV, pyastar2d) not installed")
+    async with Client(build_server(MapService({"apartment": apartment_store}))) as client:
+        bad = await client.call_tool("plan_path", arguments)
+        assert bad.is_error and bad.content[0].text == message
