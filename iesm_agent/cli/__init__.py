@@ -65,6 +65,16 @@ def _click_errors() -> tuple[tuple[type, ...], tuple[type, ...]]:
             tuple(m.Abort for m in modules if hasattr(m, "Abort")))
 
 
+def usage_line(exc: Exception) -> str:
+    """A click usage error as one line: the problem, then the command's usage."""
+    message = " ".join(str(exc.format_message()).split()).rstrip(".")
+    ctx = getattr(exc, "ctx", None)
+    if ctx is None:
+        return message
+    usage = " ".join(ctx.get_usage().split()).removeprefix("Usage: ")
+    return f"{message} (usage: {usage}; see '{ctx.command_path} --help')"
+
+
 def run(argv: list[str] | None = None) -> int:
     """Run one `iesm` command line in this process and return its exit status: user errors
     become one line on stderr and status 2."""
@@ -88,7 +98,7 @@ def run(argv: list[str] | None = None) -> int:
     except Exception as exc:  # click usage errors and aborts
         usage, aborts = _click_errors()
         if isinstance(exc, usage):
-            exc.show()
+            print(f"iesm: error: {usage_line(exc)}", file=sys.stderr)
             return 2
         if isinstance(exc, aborts):
             return 130

@@ -12,14 +12,18 @@ On disk, integer arrays use the smallest integer dtype that holds their values; 
 (occupancy cells and indptr) are delta-encoded (first value in `base`). Loading restores the
 in-memory dtype and values exactly. Embeddings are stored in their own dtype unless the caller
 asks for float16 on disk (`embeddings_dtype="float16"`, lossy, about half the size); they are
-loaded back in their original dtype. `.npy` members are read with `allow_pickle=False`.
+loaded back in their original dtype.
+
+Loading is bounded before anything large is allocated: the manifest is read with
+`fileio.load_json` (size and depth), the grid it declares must be within `MAX_GRID_CELLS`, and
+each `.npy` member's header (dtype kind, shape) is checked against the manifest, the grid and the
+member's declared size by `fileio.read_npy` before its data is read (never with pickles).
 """
 
 from __future__ import annotations
 
 import io
 import json
-import struct
 import zipfile
 import zlib
 from pathlib import Path
@@ -28,9 +32,9 @@ from typing import Any, Optional
 import numpy as np
 from pydantic import ValidationError
 
-from ..errors import MapFormatError
-from ..fileio import atomic_write
-from .model import SCHEMA_VERSION, InstanceGrid, SceneMap
+from ..errors import IesmError, MapFormatError
+from ..fileio import ARCHIVE_ERRORS, MAX_ARRAY_BYTES, atomic_write, load_json, read_npy, validation_message
+from .model import SCHEMA_VERSION, GridSpec, InstanceGrid, SceneMap
 
 MANIFEST = "manifest.json"
 _ARRAYS = ("occupancy.cells", "occupancy.indptr", "occupancy.ids", "occupancy.top",
@@ -120,50 +124,64 @@ def save_map(scene: SceneMap, path: str | Path, *, embeddings_dtype: Optional[st
     return path.stat().st_size
 
 
-def _field_of(exc: ValidationError) -> str:
-    loc = exc.errors()[0]["loc"]
-    return ".".join(str(p) for p in loc) or "manifest"
+#: largest manifest.json (bytes)
+MAX_MANIFEST_BYTES = 64 * 1024 * 1024
 
 
 def load_map(path: str | Path) -> SceneMap:
     """Read and validate a `.iesm` file. Any problem raises `MapFormatError` naming the file
-    and the field (or member) at fault."""
+    and the field (or member) at fault, on one line."""
     path = Path(path)
     if not path.is_file():
         raise MapFormatError("no such map file", path)
     try:
         with zipfile.ZipFile(path) as zf:
             manifest = _read_manifest(zf, path)
-            arrays = {entry["name"]: _read_array(zf, entry, path) for entry in manifest.pop("arrays")}
-    except (zipfile.BadZipFile, zlib.error, EOFError, NotImplementedError, ValueError, struct.error) as exc:
-        # corrupted headers surface as any of these (e.g. "zip file version 23.8")
-        raise MapFormatError(f"not a valid .iesm archive (truncated or corrupted): {exc}", path) from exc
-    except OSError as exc:  # unreadable, or a corrupted offset that seeks out of the file
-        raise MapFormatError(f"cannot read the archive (unreadable or corrupted): {exc}", path) from exc
+            grid = _read_grid(manifest, path)
+            arrays = {entry["name"]: _read_array(zf, entry, path, grid) for entry in manifest.pop("arrays")}
+    except IesmError:
+        raise
+    except ARCHIVE_ERRORS as exc:
+        # corrupted headers surface as any of these (e.g. "zip file version 23.8"), or an OSError
+        # for a corrupted offset that seeks out of the file
+        raise MapFormatError(f"not a valid .iesm archive (truncated or corrupted): {' '.join(str(exc).split())}",
+                             path) from None
     occ = None
     if any(name.startswith("occupancy.") for name in arrays):
         try:
             occ = InstanceGrid(cells=arrays.pop("occupancy.cells"), indptr=arrays.pop("occupancy.indptr"),
                                ids=arrays.pop("occupancy.ids"), top=arrays.pop("occupancy.top"))
         except KeyError as exc:
-            raise MapFormatError("occupancy arrays incomplete", path, f"arrays.{exc.args[0]}") from exc
+            raise MapFormatError("occupancy arrays incomplete", path, f"arrays.{exc.args[0]}") from None
         except ValidationError as exc:
-            raise MapFormatError(exc.errors()[0]["msg"], path, "occupancy") from exc
+            raise MapFormatError(validation_message(exc)[0], path, "occupancy") from None
     try:
         return SceneMap.model_validate({**manifest, **arrays, **({"occupancy": occ} if occ is not None else {})})
     except ValidationError as exc:
-        raise MapFormatError(exc.errors()[0]["msg"], path, _field_of(exc)) from exc
+        message, field = validation_message(exc)
+        raise MapFormatError(message, path, field or "manifest") from None
+
+
+def _read_grid(manifest: dict, path: Path) -> GridSpec:
+    """The grid the manifest declares, validated (within `MAX_GRID_CELLS`) before any array is read."""
+    try:
+        return GridSpec.model_validate(manifest.get("grid"))
+    except ValidationError as exc:
+        message, field = validation_message(exc)
+        raise MapFormatError(message, path, f"grid.{field}" if field else "grid") from None
 
 
 def _read_manifest(zf: zipfile.ZipFile, path: Path) -> dict:
     try:
-        raw = zf.read(MANIFEST)
-    except KeyError as exc:
-        raise MapFormatError("archive has no manifest.json", path, MANIFEST) from exc
-    try:
-        manifest = json.loads(raw)
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise MapFormatError(f"invalid JSON: {exc}", path, MANIFEST) from exc
+        info = zf.getinfo(MANIFEST)
+    except KeyError:
+        raise MapFormatError("archive has no manifest.json", path, MANIFEST) from None
+    if info.file_size > MAX_MANIFEST_BYTES:
+        raise MapFormatError(f"manifest declares {info.file_size:,} bytes, more than the {MAX_MANIFEST_BYTES:,} "
+                             "allowed", path, MANIFEST)
+    with zf.open(info) as stream:
+        raw = stream.read(MAX_MANIFEST_BYTES + 1)
+    manifest = load_json(raw, path, MANIFEST, max_bytes=MAX_MANIFEST_BYTES, error=MapFormatError)
     if not isinstance(manifest, dict):
         raise MapFormatError("manifest must be a JSON object", path, MANIFEST)
     version = manifest.get("schema_version")
@@ -181,8 +199,11 @@ def _read_manifest(zf: zipfile.ZipFile, path: Path) -> dict:
             raise MapFormatError(f"unknown or missing array name (expected one of {', '.join(_ARRAYS)})", path, where)
         for key, kind in (("member", str), ("dtype", str), ("disk_dtype", str), ("shape", list),
                           ("encoding", str), ("base", int)):
-            if not isinstance(entry.get(key), kind):
+            if not isinstance(entry.get(key), kind) or isinstance(entry.get(key), bool):
                 raise MapFormatError(f"missing or invalid {key!r}", path, f"{where}.{key}")
+        if not all(isinstance(n, int) and not isinstance(n, bool) and 0 <= n < 2**40 for n in entry["shape"]) \
+                or len(entry["shape"]) > 2:
+            raise MapFormatError("shape must be at most 2 non-negative integers", path, f"{where}.shape")
         if entry["encoding"] not in ("raw", "delta"):
             raise MapFormatError(f"unknown encoding {entry['encoding']!r}", path, f"{where}.encoding")
         for key in ("dtype", "disk_dtype"):  # only the numeric and bool arrays `save_map` writes
@@ -195,19 +216,34 @@ def _read_manifest(zf: zipfile.ZipFile, path: Path) -> dict:
     return manifest
 
 
-def _read_array(zf: zipfile.ZipFile, entry: dict, path: Path) -> np.ndarray:
+#: arrays laid over the grid: their shape must be the grid's
+_GRID_LAYERS = ("room_map", "obstacles")
+
+
+def _read_array(zf: zipfile.ZipFile, entry: dict, path: Path, grid: GridSpec) -> np.ndarray:
     member = entry["member"]
+    shape = entry["shape"]
+    if entry["name"] in _GRID_LAYERS and shape != [grid.height, grid.width]:
+        raise MapFormatError(f"shape {shape} does not match the grid ({grid.height} x {grid.width})", path, member)
     try:
-        raw = zf.read(member)
-    except KeyError as exc:
-        raise MapFormatError("member missing from archive", path, member) from exc
+        info = zf.getinfo(member)
+    except KeyError:
+        raise MapFormatError("member missing from archive", path, member) from None
+    disk_shape = [max(shape[0] - 1, 0)] if entry["encoding"] == "delta" and shape else shape
+
+    def check(found: tuple[int, ...], dtype: np.dtype) -> None:
+        if dtype != np.dtype(entry["disk_dtype"]):
+            raise MapFormatError(f"dtype {dtype} does not match manifest {entry['disk_dtype']}", path, member)
+        if list(found) != disk_shape:
+            raise MapFormatError(f"shape {list(found)} does not match manifest {shape}", path, member)
+
+    with zf.open(info) as stream:
+        disk = read_npy(stream, path, member, declared_bytes=info.file_size, max_bytes=MAX_ARRAY_BYTES,
+                        check=check, error=MapFormatError)
     try:
-        disk = np.load(io.BytesIO(raw), allow_pickle=False)
-        if disk.dtype != np.dtype(entry["disk_dtype"]):
-            raise ValueError(f"dtype {disk.dtype} does not match manifest {entry['disk_dtype']}")
         arr = _decode(entry, disk)
-    except (ValueError, TypeError, OverflowError, OSError) as exc:  # OverflowError: a `base` out of range
-        raise MapFormatError(f"unreadable array: {exc}", path, member) from exc
+    except (ValueError, TypeError, OverflowError) as exc:  # OverflowError: a `base` out of range
+        raise MapFormatError(f"unreadable array: {exc}", path, member) from None
     if list(arr.shape) != entry["shape"]:
         raise MapFormatError(f"shape {list(arr.shape)} does not match manifest {entry['shape']}", path, member)
     return arr

@@ -8,12 +8,40 @@ Flat cell index = row * width + col.
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import Annotated, Any, Optional
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+
+from ..errors import MapFormatError
 
 SCHEMA_VERSION = 1
+#: largest grid a map may have (cells); 5000 x 5000 is 125 m square at 2.5 cm
+MAX_GRID_CELLS = 25_000_000
+#: largest coordinate (m) accepted anywhere in a map or a map's input
+MAX_COORD = 1e6
+#: ids fit a signed 32-bit integer
+MAX_ID = 2**31 - 1
+
+
+def _not_bool(value: Any) -> Any:
+    if isinstance(value, bool):
+        raise ValueError("expected an integer id, not a boolean")
+    return value
+
+
+#: an instance or room id: an integer (not `true`) of at most 32 bits
+Id = Annotated[int, BeforeValidator(_not_bool), Field(ge=-MAX_ID, le=MAX_ID)]
+#: a finite coordinate or height in metres, |v| <= MAX_COORD
+Metres = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_COORD, le=MAX_COORD)]
+
+
+def check_grid_size(height: int, width: int, source: Any = None, where: str | None = "grid") -> None:
+    """Refuse a grid too large to hold in memory (far-apart objects, a corrupted input, a tiny
+    cell size) with a `MapFormatError` naming the limit, before anything is allocated."""
+    if height * width > MAX_GRID_CELLS:
+        raise MapFormatError(f"a grid of {height} x {width} cells is more than the {MAX_GRID_CELLS:,} cells "
+                             "allowed: check the coordinates or use a larger --cell-size", source, where)
 
 
 def arrays_equal(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> bool:
@@ -27,11 +55,11 @@ def arrays_equal(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> bool:
 class Room(BaseModel):
     """A room (region) of the map. `polygon` is a list of (x, y) vertices in metres."""
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    id: int
+    id: Id
     label: str
-    polygon: Optional[list[tuple[float, float]]] = None
+    polygon: Optional[list[tuple[Metres, Metres]]] = None
 
 
 class Instance(BaseModel):
@@ -43,31 +71,38 @@ class Instance(BaseModel):
     `centroid` is (x, y, z) in metres; `footprint_cells` is the number of grid cells it occupies.
     """
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    id: int
+    id: Id
     label: str
-    room_id: Optional[int] = None
+    room_id: Optional[Id] = None
     room_label: Optional[str] = None
     caption: str = ""
     tags: dict[str, str] = Field(default_factory=dict)
     alt_labels: list[str] = Field(default_factory=list)
-    mean_height: Optional[float] = None
-    weight: float = 1.0
-    frames: list[int] = Field(default_factory=list)
-    centroid: Optional[tuple[float, float, float]] = None
-    footprint_cells: int = 0
+    mean_height: Optional[Metres] = None
+    weight: float = Field(1.0, ge=0)
+    frames: list[Annotated[int, Field(ge=0, le=MAX_ID)]] = Field(default_factory=list)
+    centroid: Optional[tuple[Metres, Metres, Metres]] = None
+    footprint_cells: int = Field(0, ge=0, le=MAX_GRID_CELLS)
 
 
 class GridSpec(BaseModel):
     """Top-down grid: `cell_size` in metres, `origin` (x, y) of cell (0, 0)'s corner, `height` rows x `width` cols."""
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    cell_size: float = Field(gt=0)
-    origin: tuple[float, float] = (0.0, 0.0)
-    height: int = Field(ge=0)
-    width: int = Field(ge=0)
+    cell_size: float = Field(gt=0, le=1000)
+    origin: tuple[Metres, Metres] = (0.0, 0.0)
+    height: int = Field(ge=0, le=MAX_GRID_CELLS)
+    width: int = Field(ge=0, le=MAX_GRID_CELLS)
+
+    @model_validator(mode="after")
+    def _bounded(self) -> "GridSpec":
+        if self.height * self.width > MAX_GRID_CELLS:
+            raise ValueError(f"a grid of {self.height} x {self.width} cells is more than the "
+                             f"{MAX_GRID_CELLS:,} cells allowed")
+        return self
 
     def cell_of(self, x: float, y: float) -> tuple[int, int]:
         """(row, col) of the cell containing world point (x, y); may be outside the grid."""

@@ -9,43 +9,20 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any, Optional
 
 from ...errors import MapFormatError
-from ..model import SceneMap
+from ...fileio import field_path, load_json  # noqa: F401 (importers use field_path from here)
+from ..model import MAX_GRID_CELLS, SceneMap, check_grid_size  # noqa: F401 (importers use them from here)
 
 FORMATS = ("objects", "iesm")
-#: largest grid an importer builds (cells); 5000 x 5000 is 125 m square at 2.5 cm
-MAX_GRID_CELLS = 25_000_000
-
-
-def field_path(loc: tuple[Any, ...]) -> str:
-    """Pydantic error location -> readable field path, e.g. ('objects', 3, 'size') -> 'objects[3].size'."""
-    out = ""
-    for part in loc:
-        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
-    return out
-
-
-def check_grid_size(height: int, width: int, path: Path) -> None:
-    """Refuse a grid too large to hold in memory (far-apart objects, a corrupted PLY, a tiny
-    cell size) with a `MapFormatError` instead of exhausting memory."""
-    if height * width > MAX_GRID_CELLS:
-        raise MapFormatError(f"the map would need a grid of {height} x {width} cells (more than "
-                             f"{MAX_GRID_CELLS:,}): check the coordinates or use a larger --cell-size",
-                             path, "grid")
 
 
 def read_json(path: Path) -> Any:
-    """The parsed JSON of `path`; unreadable or invalid files are a `MapFormatError` naming it."""
-    try:
-        return json.loads(path.read_bytes())
-    except OSError as exc:
-        raise MapFormatError(f"cannot read: {exc.strerror or exc}", path) from exc
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise MapFormatError(f"invalid JSON: {exc}", path) from exc
+    """The parsed JSON of `path` (`fileio.load_json`: size and depth bounded); unreadable or
+    invalid files are a `MapFormatError` naming it."""
+    return load_json(Path(path), error=MapFormatError)
 
 
 def detect_format(path: str | Path) -> str:

@@ -17,19 +17,20 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from ...errors import MapFormatError
 from ...colours import colour_name
-from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
+from ..model import GridSpec, Id, Instance, InstanceGrid, Metres, Room, SceneMap
 from . import check_grid_size, field_path, read_json
 
 MARGIN = 0.25  # m of free space around the union of boxes
-PositiveVec3 = tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]]
+Extent = Annotated[float, Field(gt=0, le=10_000)]
+PositiveVec3 = tuple[Extent, Extent, Extent]
 
 
 class RoomSpec(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    id: int
+    id: Id
     label: str = Field(min_length=1)
-    polygon: Optional[list[tuple[float, float]]] = None
+    polygon: Optional[list[tuple[Metres, Metres]]] = None
 
     @field_validator("polygon")
     @classmethod
@@ -42,19 +43,19 @@ class RoomSpec(BaseModel):
 class ObjectSpec(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)  # NaN/inf would break the grid
 
-    id: int
+    id: Id
     label: str = Field(min_length=1)
-    center: tuple[float, float, float]
+    center: tuple[Metres, Metres, Metres]
     size: PositiveVec3
     color_rgb: Optional[tuple[Annotated[int, Field(ge=0, le=255)], Annotated[int, Field(ge=0, le=255)],
                               Annotated[int, Field(ge=0, le=255)]]] = None
-    room: Optional[Union[int, str]] = None
+    room: Optional[Union[Id, str]] = None
     caption: Optional[str] = None
     tags: dict[str, str] = Field(default_factory=dict)
     alt_labels: list[str] = Field(default_factory=list)
     # written by `iesm sim` into gt/objects.json; accepted so ground truth imports as a map
     structural: bool = False  # wall, door or window: part of the building
-    on: Optional[int] = None  # id of the instance this one stands on
+    on: Optional[Id] = None  # id of the instance this one stands on
 
 
 class ObjectList(BaseModel):
