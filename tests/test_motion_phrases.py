@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import pytest
 
-from iesm_agent.embeddings import encoder_name
-from iesm_agent.providers.offline.spatial_parse import parse_query
+from iesm_agent.lexicon import load_lexicon
+from iesm_agent.understanding import analyse_query
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore, open_map
+from iesm_agent.understanding.spatial import parse_query
 
 
 @pytest.fixture(scope="module")
@@ -17,26 +18,17 @@ def retriever():
     return Retriever(MapStore(open_map("apartment")), provider="offline")
 
 
-#: known gaps, kept visible (strict xfail: they fail today and flip when fixed): the shared query
-#: reading still takes "round" after a motion verb as a shape, "sit" in "go sit by" as the function
-#: asked for, and an unknown verb ("zip") as the target
-_GAP = pytest.mark.xfail(strict=True, reason="known gap in the shared query reading (see comment above)")
-#: the unknown verb is taken as the target only when the sentence encoder grounds it (the `embeddings`
-#: extra); without the encoder the query is answered right
-_ENCODER_GAP = pytest.mark.xfail(encoder_name() is not None, strict=True,
-                                 reason="known gap in the shared query reading (see comment above)")
 MOTION = [("make your way over to the bookshelf, thanks", "bookshelf"),
           ("could you pull up to the desk", "desk"),
           ("stop by the refrigerator for me", "refrigerator"),
-          pytest.param("come round to the bed", "bed", marks=_GAP),
+          ("come round to the bed", "bed"),
           ("walk up to the wardrobe", "wardrobe"),
-          pytest.param("zip over to the printer", "printer", marks=_ENCODER_GAP),
-          pytest.param("go sit by the bathtub", "bathtub", marks=_GAP),
+          ("zip over to the printer", "printer"),
+          ("go sit by the bathtub", "bathtub"),
           ("take me across to the mirror in the hallway", "mirror")]
-MOTION_PARSE = [getattr(m, "values", m) for m in MOTION]  # the parse is right in every case
 
 
-@pytest.mark.parametrize("query, label", MOTION_PARSE)
+@pytest.mark.parametrize("query, label", MOTION)
 def test_motion_particles_are_not_relations(query, label):
     sq = parse_query(query)
     assert sq.relations == [] and sq.target, query
@@ -57,8 +49,7 @@ def test_a_landmark_named_alone_is_the_target_not_a_landmark():
         assert sq.relations == [] and sq.target, query
 
 
-RELATIONS = [pytest.param("the lamp standing on the nightstand", 34, marks=pytest.mark.xfail(
-                 strict=True, reason="known gap: 'lamp standing' is read as the category 'lamp stand'")),
+RELATIONS = [("the lamp standing on the nightstand", 34),
              ("the lamp on the nightstand", 34), ("the picture that hangs over the sofa", 6),
              ("the cabinet under the bathroom sink", 42), ("which plant is closest to the bed", 39),
              ("the lamp next to the desk", 56)]
@@ -76,3 +67,29 @@ def test_a_relation_after_a_motion_phrase_is_still_read():
     sq = parse_query("head over to the lamp on the nightstand")
     assert sq.target and sq.target[0] == "lamp"
     assert [(r.kind, r.landmarks[0][0]) for r in sq.relations] == [("on", "nightstand")]
+
+
+def test_motion_words_leave_the_query_reading():
+    """The shape "round", the function "sit" and an unknown verb are motion here, not content."""
+    for query, label in (("come round to the bed", "bed"), ("go sit by the bathtub", "bathtub"),
+                         ("zip over to the printer", "printer")):
+        info = analyse_query(query)
+        assert info.targets == {label: 1.0} and not info.attrs and not info.afford, query
+
+
+def test_exclusions_say_what_the_target_is_not(retriever):
+    info = analyse_query("the armchair in woven fabric rather than leather")
+    assert ("material", "fabric") in info.attrs and ("material", "leather") not in info.attrs
+    assert ("material", "leather") in info.excluded_attrs
+    res = retriever.ask("take me to a seat in the kitchen, but not the one by the window")
+    assert res.label == "chair"
+    res = retriever.ask("somewhere to sit that isn't a sofa or an armchair")
+    assert res.label not in ("sofa", "armchair")
+
+
+def test_misspellings_are_read_as_the_word_they_miss():
+    for query, label in (("the refridgerator", "refrigerator"), ("the washbassin", "sink"),
+                         ("the wardrobbe in the bedrom", "wardrobe")):
+        assert label in analyse_query(query).targets, query
+    assert analyse_query("a bit of light").targets.keys() == analyse_query("a bit of light").targets.keys()
+    assert load_lexicon().correct("bit") == "bit"     # an English word is never corrected

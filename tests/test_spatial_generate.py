@@ -7,7 +7,7 @@ import pytest
 
 from iesm_agent.evals.generate import parse_types
 from iesm_agent.evals.spatial_queries import spatial_queries
-from iesm_agent.providers.offline.spatial_parse import parse_query
+from iesm_agent.understanding.spatial import parse_query
 from iesm_agent.store import MapStore
 from iesm_agent.store.importers.objects import import_objects
 from iesm_agent.store.refs import open_map

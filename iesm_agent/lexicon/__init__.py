@@ -54,6 +54,8 @@ class Lexicon:
     vocab: frozenset[str]
     cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
+    _correction_cache: dict[tuple[str, frozenset[str]], str] = field(default_factory=dict, repr=False)
+    _targets: frozenset[str] | None = field(default=None, repr=False)
 
     # -- tokens -----------------------------------------------------------------------------
     def lemma(self, token: str) -> str:
@@ -78,6 +80,56 @@ class Lexicon:
             else:
                 out.append(tok)
         return out
+
+    def correct(self, token: str, extra: frozenset[str] = frozenset()) -> str:
+        """`token`, or the lexicon word (or word of `extra`, such as the map's labels) it misspells:
+        one edit away (insertion, deletion, substitution or transposition of neighbours) for words of
+        4 to 8 letters, two for longer ones, the closest when it is unique. Known words, English
+        words (`english_words.txt`) and short or non-alphabetic tokens are never changed."""
+        if len(token) < 4 or not token.isalpha() or token in self.vocab or token in self.lemmas \
+                or token in _english() or token in extra or self.lemma(token) in self.vocab:
+            return token
+        key = (token, extra)
+        hit = self._correction_cache.get(key)
+        if hit is not None:
+            return hit
+        from rapidfuzz.distance import OSA
+        from rapidfuzz.process import extract
+
+        limit = 1 if len(token) < 9 else 2
+        choices = self._spelling_targets | extra
+        found = extract(token, choices, scorer=OSA.distance, score_cutoff=limit, limit=4)
+        closest = [w for w, d, _ in found if d == found[0][1]] if found else []
+        # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
+        best = min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
+        if len(self._correction_cache) < 100_000:
+            self._correction_cache[key] = best
+        return best
+
+    def spell(self, tokens: list[str], extra: frozenset[str] = frozenset()) -> list[str]:
+        """`tokens` with misspellings corrected (`correct`) and run-together phrases the lexicon
+        knows split ("livingroom" -> living room)."""
+        out: list[str] = []
+        for token in tokens:
+            fixed = self.correct(token, extra)
+            out.extend(self._split(fixed) if fixed == token else [fixed])
+        return out
+
+    def _split(self, token: str) -> list[str]:
+        if len(token) < 7 or not token.isalpha() or token in self.vocab or token in _english():
+            return [token]
+        for cut in range(3, len(token) - 2):
+            pair = (token[:cut], token[cut:])
+            if pair in self.phrases:
+                return list(pair)
+        return [token]
+
+    @property
+    def _spelling_targets(self) -> frozenset[str]:
+        """Lexicon words a misspelling may stand for (alphabetic, at least 3 letters)."""
+        if self._targets is None:
+            self._targets = frozenset(w for w in self.vocab if w.isalpha() and len(w) >= 3)
+        return self._targets
 
     # -- phrases ----------------------------------------------------------------------------
     def scan(self, lemmas: list[str]) -> list[Span]:
@@ -189,6 +241,13 @@ def _guess_lemma(token: str, vocab: frozenset[str]) -> str:
     if token.endswith("s") and not token.endswith(("ss", "us", "is")):
         return token[:-1]
     return token
+
+
+@lru_cache(maxsize=1)
+def _english() -> frozenset[str]:
+    """English words the spelling corrector leaves alone (`english_words.txt`)."""
+    text = resources.files(__name__).joinpath("english_words.txt").read_text(encoding="utf-8")
+    return frozenset(line for line in text.splitlines() if line and not line.startswith("#"))
 
 
 @lru_cache(maxsize=None)

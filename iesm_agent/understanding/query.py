@@ -7,7 +7,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
-from .text import Slot, modifier_spans, read_slots, stem
+from .motion import strip_motion
+from .text import Slot, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
 _UNSPECIFIC = frozenset({"object"})
@@ -35,6 +36,10 @@ class QueryInfo:
     overlap: frozenset[str] = frozenset()                     # stems of extra and attribute words
     unknown_target: str | None = None     # target words the lexicon does not know ("the gizmo")
     unknown_room: str | None = None       # place words after "in" the lexicon does not know
+    #: what the query rules out ("not the leather one", "that isn't a couch"): categories and
+    #: attributes read from the words after an exclusion marker, which add nothing to the above
+    excluded_targets: frozenset[str] = frozenset()
+    excluded_attrs: frozenset[tuple[str, str]] = frozenset()
     memo: dict = field(default_factory=dict, repr=False, compare=False)  # scorer's per-query cache
 
     @property
@@ -61,15 +66,53 @@ def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float
         target[concept] = target.get(concept, 0.0) + w * scale
 
 
+#: word sequences after which the query says what the target is NOT
+_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
+               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
+
+
+def _place_phrase_last(lex: Lexicon, tokens: list[str]) -> list[str]:
+    """A leading place phrase moved after the request ("in the bedroom, find the armchair" ->
+    "find the armchair in the bedroom"), so the target phrase starts the query as usual."""
+    if not tokens or tokens[0] not in _PLACE_PREPOSITIONS:
+        return tokens
+    lemmas = [lex.lemma(t) for t in tokens]
+    room = next((s for s in lex.scan(lemmas[1:5]) if s.has("room")), None)
+    if room is None or room.end + 1 >= len(tokens):
+        return tokens
+    cut = room.end + 1
+    return tokens[cut:] + tokens[:cut]
+
+
+def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
+    """(start, end) of the first exclusion marker after the first word, or None."""
+    for i in range(1, len(tokens)):
+        for marker in _EXCLUSIONS:
+            if tuple(tokens[i:i + len(marker)]) == marker:
+                return i, i + len(marker)
+    return None
+
+
 @lru_cache(maxsize=4096)
 def analyse_query(text: str) -> QueryInfo:
-    """Targets, rooms, attributes and functional intent of a natural-language query."""
+    """Targets, rooms, attributes and functional intent of a natural-language query; words
+    after an exclusion marker ("- not the leather one") only say what the target is not."""
     lex = load_lexicon()
     skip, bounds = lex.words["skip"], lex.words["boundaries"]
-    surface = [t for t in _strip_command(lex, lex.tokens(text)) if t not in skip]
-    lemmas = [lex.lemma(t) for t in surface]
+    tokens = lex.spell(lex.tokens(text))
+    marker = _exclusion_at(tokens)
+    ruled_out = None
+    if marker is not None:
+        ruled_out = analyse_query(" ".join(tokens[marker[1]:]))
+        tokens = tokens[:marker[0]]
+    tokens = _strip_command(lex, strip_motion(_place_phrase_last(lex, tokens)))
+    surface = [t for t in tokens if t not in skip]
+    lemmas = lemmatise(lex, surface)
     spans = lex.scan(lemmas)
     info = QueryInfo(text=text)
+    if ruled_out is not None:
+        info.excluded_targets = frozenset(ruled_out.targets)
+        info.excluded_attrs = frozenset(ruled_out.attrs)
 
     # the target noun phrase ends at the first boundary word (relative clause, landmark, room)
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase

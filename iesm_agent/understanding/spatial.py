@@ -7,8 +7,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ...lexicon import load_lexicon
-from ...understanding import analyse_query
+from ..lexicon import load_lexicon
+from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
+from .query import analyse_query
+from .text import lemmatise
 
 _CUES: dict[tuple[str, ...], str] = {
     ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
@@ -42,23 +44,6 @@ SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "s
 #: "on" after these verbs states a use, not a place ("where can I work on my computer")
 _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
               "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
-#: verbs of motion: a particle or preposition right after one (optionally after its object: "take
-#: me over to") says where to go, not where the target is ("head over to", "stop by", "pull up to")
-_MOTION_VERBS = {"go", "goes", "going", "head", "heading", "walk", "walking", "come", "coming", "move", "moving",
-                 "drive", "driving", "navigate", "navigating", "run", "step", "swing", "stop", "drop", "pop", "pull",
-                 "roll", "wander", "get", "bring", "take", "lead", "guide", "return", "travel", "proceed", "hurry",
-                 "pass", "nip", "dash", "scoot", "mosey", "make", "hop", "stroll", "jog", "wheel", "steer", "zip",
-                 "carry", "escort", "send", "turn", "swing", "pull", "cruise", "amble"}
-#: verbs of posture that chain after a motion verb ("go stand next to", "come sit by"): verbs there,
-#: never the category nouns they spell ("stand")
-_POSTURE_VERBS = {"stand", "sit", "wait", "park", "stay", "hover", "look", "hang", "settle"}
-#: words between a motion verb and its particle ("take me over to", "make your way over to")
-_MOTION_OBJECTS = {"me", "us", "yourself", "it", "him", "her", "them", "way", "your", "my", "on", "back", "right"}
-#: particles of motion: "over to", "up to", "round to", "across to", "by" after a motion verb
-_PARTICLES = {"over", "up", "down", "round", "around", "across", "along", "by", "back", "past", "through",
-              "near", "close", "next", "on", "off", "in", "out", "beside"}
-#: what follows a particle when the phrase names a destination
-_DESTINATION_PREPS = {"to", "towards", "toward", "into", "onto", "until", "till"}
 #: nouns standing for an unnamed target ("the one by the door", "the thing on the shelf")
 _TARGET_PRONOUNS = {"one", "ones", "thing", "things", "something", "object", "item", "stuff", "whatever"}
 _INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
@@ -99,12 +84,12 @@ class SpatialQuery:
 def parse_query(text: str) -> SpatialQuery:
     """The spatial reading of `text` (no relations when it states none)."""
     lex = load_lexicon()
-    toks = [t for t in lex.tokens(text) if t not in lex.words["skip"] or t in ("one",)]
-    lemmas = [lex.lemma(t) for t in toks]
+    toks = [t for t in lex.spell(lex.tokens(text)) if t not in lex.words["skip"] or t in ("one",)]
+    lemmas = lemmatise(lex, toks)
     spans = lex.scan(lemmas)
     cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
-              and not (s.end - s.start == 1 and toks[s.start] in _POSTURE_VERBS
-                       and s.start > 0 and toks[s.start - 1] in _MOTION_VERBS)
+              and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
+                       and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
               # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
               and not (s.end - s.start == 1 and toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start])}
     attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
@@ -164,7 +149,7 @@ def parse_query(text: str) -> SpatialQuery:
             continue
         words, kind = cue
         nxt = toks[i + len(words)] if i + len(words) < len(toks) else ""
-        if _is_destination(toks, i, len(words)):
+        if is_destination(toks, i, len(words)):
             i += len(words)
             continue  # "head over to", "stop by", "walk up to": where to go, not a relation
         i += len(words)
@@ -261,14 +246,3 @@ def parse_query(text: str) -> SpatialQuery:
                       and not any(r.kind == "extreme" for r in out.relations)]
     return out
 
-
-def _is_destination(toks: list[str], i: int, n: int) -> bool:
-    """True when the cue toks[i:i+n] is a particle or preposition of motion: right after a verb of
-    motion (and its object: "take me over to", "make your way up to"), or a particle followed by a
-    destination preposition ("over to the sofa", "round to the desk")."""
-    if toks[i] in _PARTICLES and i + n < len(toks) and toks[i + n] in _DESTINATION_PREPS:
-        return True
-    j = i - 1
-    while j >= 0 and (toks[j] in _MOTION_OBJECTS or toks[j] in _POSTURE_VERBS) and i - j <= 3:
-        j -= 1
-    return j >= 0 and toks[j] in _MOTION_VERBS and toks[i] in _PARTICLES | {"to", "towards", "toward"}

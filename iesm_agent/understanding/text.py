@@ -20,6 +20,19 @@ class Slot:
     values: frozenset[str]
 
 
+def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
+    """Lemmas of a query's tokens; a present participle before a preposition or relative word keeps
+    its form ("the lamp standing on the desk": a verb, so never the category "lamp stand")."""
+    bounds = lex.words["boundaries"]
+    out = []
+    for i, token in enumerate(tokens):
+        lemma = lex.lemma(token)
+        if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds:
+            lemma = token
+        out.append(lemma)
+    return out
+
+
 def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
     """Stems of words and of the parts of hyphenated words; imitation words read as "like"."""
     out: set[str] = set()

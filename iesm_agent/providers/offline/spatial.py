@@ -19,7 +19,7 @@ from ...lexicon import load_lexicon
 from ...store import geometry as geo
 from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
 from .prompt import Prompt
-from .spatial_parse import SIZE_EXTREMES, Relation, parse_query
+from ...understanding.spatial import SIZE_EXTREMES, Relation, parse_query
 
 #: words in spatial.j2's system block that make a ranking prompt a spatial one
 SPATIAL_MARKER = "spatial-relation expert"
@@ -256,17 +256,20 @@ def rank(prompt: Prompt) -> dict:
 # -- gate ------------------------------------------------------------------------------------
 def weigh(prompt: Prompt, reply: dict) -> dict:
     """Adjust a gate reply for experts whose description declares spatial relations: 4 when the
-    query states a relation, comparison, order or viewpoint (then every other expert at most
-    `_OTHERS_CAP`, since a category, room or colour alone cannot pick among same-kind objects),
-    else 0."""
+    query names the target's kind and states a relation, comparison, order or viewpoint (then
+    every other expert at most `_OTHERS_CAP`, since a category, room or colour alone cannot pick
+    among same-kind objects), 2 beside the others when the kind is not named, else 0."""
     spatial = [e["name"] for e in prompt.experts if GATE_MARKER in str(e.get("gate_description", "")).lower()]
     if not spatial:
         return reply
     sq = parse_query(prompt.query)
     scores, hints = dict(reply.get("scores", {})), dict(reply.get("hints", {}))
-    if sq.relations:
+    named = bool(sq.target) and bool(analyse_query(prompt.query).named)
+    if sq.relations and named:
         scores = {name: min(int(s), _OTHERS_CAP) for name, s in scores.items()}
     for name in spatial:
-        scores[name] = 4 if sq.relations else 0
+        # with the target's kind unnamed ("what I use to heat water, on the counter") the kind is
+        # evidence as strong as the relation: the spatial expert then shares the decision
+        scores[name] = (4 if named else 2) if sq.relations else 0
         hints[name] = sq.words
     return {"scores": scores, "hints": hints}

@@ -30,8 +30,9 @@ def gate(prompt: Prompt) -> dict:
 
 def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
     """0-4 per built-in expert. A named category is the decisive evidence (4): labels are the
-    mapper's most reliable output. A named room (3) and visual details (3, 2 for one loose
-    word) qualify it, and outvote it only together (two experts agreeing on another instance).
+    mapper's most reliable output. A named room (3) and visual details (3; other loose words
+    are weak evidence, 1) qualify it, and outvote it only together (two experts agreeing on
+    another instance).
     Without a category, the function asked for decides (abstract expert 4)."""
     attrs = " ".join(v for _, v in q.attrs)
     loose = q.extra - _unknown_words(q)
@@ -44,11 +45,11 @@ def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
     if role == "room":
         score = 3 if explicit_room else 1 if q.rooms else 0
         return score, q.room_phrase or q.unknown_room or " ".join(q.rooms)
-    if role == "desc":
-        if n_desc == 0:
-            return 0, attrs
+    if role == "desc":  # appearance words are the evidence; other loose words only hint at it
+        if not q.attrs:
+            return (1 if loose else 0), attrs
         if q.named:
-            return (3 if q.attrs else 2), attrs
+            return 3, attrs
         return min(3 if q.afford else 4, round(1.5 + 1.5 * n_desc)), attrs
     top = [c for c, w in sorted(q.afford.items(), key=lambda kv: -kv[1]) if w >= 1.0][:4]
     if q.named:
@@ -122,6 +123,9 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
         comp[:, _EMB] = _embedding_scores(enc, q.text, records)
     scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
     scores = scores + _TIE_BREAK * comp.sum(axis=1)
+    ruled_out = _ruled_out(q, records)
+    if ruled_out.any() and not ruled_out.all():  # "not the leather one": never those
+        relevant = relevant & ~ruled_out
     order = np.lexsort((ids, -scores))
     ranked: list[int] = []
     for i in order:
@@ -130,6 +134,24 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
         if relevant[i] and int(ids[i]) not in ranked:
             ranked.append(int(ids[i]))
     return {"ranked_instance_ids": ranked}
+
+
+def _ruled_out(q: QueryInfo, records: list[Record]) -> np.ndarray:
+    """(N,) bool: candidates the query excludes: of an excluded category, or with an excluded
+    attribute and none of the attributes the query asks for."""
+    out = np.zeros(len(records), dtype=bool)
+    if not q.excluded_targets and not q.excluded_attrs:
+        return out
+    lex = load_lexicon()
+    wanted = set(q.attrs)
+    for k, r in enumerate(records):
+        kinds = [c for c, w in r.concepts if w >= 1.0]
+        if any(lex.concept_sim(x, c) >= 0.9 for x in q.excluded_targets for c in kinds) \
+                and not any(lex.concept_sim(t, c) >= 0.9 for t, w in q.targets.items() if w >= 1.0 for c in kinds):
+            out[k] = True
+        elif r.attrs & q.excluded_attrs and not r.attrs & wanted:
+            out[k] = True
+    return out
 
 
 def _tiers(fit: np.ndarray, min_best: float) -> np.ndarray:

@@ -1,0 +1,71 @@
+"""Verbs of motion and their particles: the grammar that tells "head over to the sofa" (where to
+go: the sofa is the target) from "the picture over the sofa" (a relation). Shared by the query
+reading (`query`) and the spatial reading (`spatial`)."""
+
+from __future__ import annotations
+
+#: verbs of motion: a particle or preposition right after one (optionally after its object: "take
+#: me over to") says where to go, not where the target is ("head over to", "stop by", "pull up to")
+MOTION_VERBS = frozenset({
+    "go", "goes", "going", "head", "heading", "walk", "walking", "come", "coming", "move", "moving", "drive",
+    "driving", "navigate", "navigating", "run", "step", "swing", "stop", "drop", "pop", "pull", "roll", "wander",
+    "get", "bring", "take", "lead", "guide", "return", "travel", "proceed", "hurry", "pass", "nip", "dash",
+    "scoot", "mosey", "make", "hop", "stroll", "jog", "wheel", "steer", "zip", "carry", "escort", "send", "turn",
+    "cruise", "amble"})
+#: verbs of posture that chain after a motion verb ("go stand next to", "come sit by"): verbs there,
+#: never the category nouns they spell ("stand") nor the function asked for ("sit")
+POSTURE_VERBS = frozenset({"stand", "sit", "wait", "park", "stay", "hover", "look", "hang", "settle"})
+#: words a motion verb used as a verb follows (or it starts the query): "could you head over",
+#: "please swing by"; after anything else it is a noun ("rest my head on")
+VERB_OPENERS = frozenset({"you", "please", "to", "and", "then", "now", "just", "can", "could", "would", "will", "i",
+                          "we", "let's", "lets", "me", "us", "kindly", "pls", "ok", "okay", "hey", "robot", "so",
+                          "first", "quickly", "also", "pal", "buddy"})
+#: words between a motion verb and its particle ("take me over to", "make your way over to")
+MOTION_OBJECTS = frozenset({"me", "us", "yourself", "it", "him", "her", "them", "way", "your", "my", "on", "back",
+                            "right"})
+#: particles of motion: "over to", "up to", "round to", "across to", "by" after a motion verb
+PARTICLES = frozenset({"over", "up", "down", "round", "around", "across", "along", "by", "back", "past",
+                       "through", "near", "close", "next", "on", "off", "in", "out", "beside"})
+#: particles that name a path, never a place: followed by "to" they always mean motion ("over to",
+#: "round to"), unlike "next to" or "close to"
+PATH_PARTICLES = frozenset({"over", "up", "down", "round", "around", "across", "along", "back", "past", "through"})
+#: what follows a particle when the phrase names a destination
+DESTINATION_PREPS = frozenset({"to", "towards", "toward", "into", "onto", "until", "till"})
+
+
+def _verb_before(toks: list[str], i: int) -> int:
+    """Index of the motion verb that governs position `i` (skipping its object and a posture
+    verb: "take me over", "go sit by"), or -1."""
+    j = i - 1
+    while j >= 0 and (toks[j] in MOTION_OBJECTS or toks[j] in POSTURE_VERBS) and i - j <= 3:
+        j -= 1
+    if j < 0 or toks[j] not in MOTION_VERBS:
+        return -1
+    return j if j == 0 or toks[j - 1] in VERB_OPENERS or toks[j - 1] in MOTION_VERBS else -1
+
+
+def is_destination(toks: list[str], i: int, n: int) -> bool:
+    """True when toks[i:i+n] is a particle or preposition of motion: right after a verb of motion
+    (and its object), or a path particle followed by a destination preposition ("over to the sofa")."""
+    if toks[i] in PATH_PARTICLES and i + n < len(toks) and toks[i + n] in DESTINATION_PREPS:
+        return True
+    return _verb_before(toks, i) >= 0 and toks[i] in PARTICLES | DESTINATION_PREPS
+
+
+def strip_motion(toks: list[str]) -> list[str]:
+    """`toks` without the motion phrases that only say where to go: a motion verb with its object,
+    a chained posture verb, its particle and destination preposition ("make your way over to",
+    "go sit by", "come round to"); a verb without a particle or preposition after it stays."""
+    drop: set[int] = set()
+    i = 0
+    while i < len(toks):
+        if toks[i] in PARTICLES | DESTINATION_PREPS and is_destination(toks, i, 1):
+            start = _verb_before(toks, i)
+            end = i + 1
+            while end < len(toks) and toks[end] in DESTINATION_PREPS:
+                end += 1
+            drop.update(range(start if start >= 0 else i, end))
+            i = end
+            continue
+        i += 1
+    return [t for k, t in enumerate(toks) if k not in drop]
