@@ -16,7 +16,7 @@ import pytest
 
 #: the window the server is started with (tokens): small enough that prompts over the apartment
 #: map must be cut, large enough for a handful of candidates (and quick on two shared cores)
-N_CTX = 1536
+N_CTX = 2048
 
 
 def _free_port() -> int:
