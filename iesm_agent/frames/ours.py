@@ -1,7 +1,8 @@
 """RGB-D frame sets on disk: the layout `iesm sim` writes and `iesm build-map` reads.
 
 DIR/scene.json, DIR/intrinsics.json, DIR/frames/NNNNNN.{rgb.png, depth.png, pose.txt, seg.npz,
-inst.png}; see docs/frames.md. Simulator ground truth (DIR/gt/) is read by `sim.ground_truth`.
+inst.png}, optional DIR/vocabulary.npz and DIR/frame_features.npz (written by `iesm segment`); see
+docs/frames.md. Simulator ground truth (DIR/gt/) is read by `sim.ground_truth`.
 Units: metres, world z up with the floor at z = 0; camera frame OpenCV (x right, y down, z forward);
 poses are camera-to-world 4x4; depth png is uint16 millimetres along the optical axis, 0 = none.
 PNG I/O uses OpenCV (the `mapping` extra). Every bad file gives an `IesmError` naming it.
@@ -16,8 +17,8 @@ from typing import Iterator, Literal, Optional, Protocol
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
-from .errors import IesmError
-from .fileio import atomic_write, read_json_model, write_png, write_text
+from ..errors import IesmError
+from ..fileio import atomic_write, read_json_model, write_png, write_text
 
 FORMAT = "iesm-frames"
 VERSION = 1
@@ -56,6 +57,9 @@ class SceneMeta(BaseModel):
     embedding_space: str = Field(min_length=1)
     categories: list[str] = Field(default_factory=list)
     cell_size: float = Field(default=0.05, gt=0)
+    #: where the frames came from and what was done to them (layout, gravity alignment, skipped
+    #: frames), written by `iesm segment` for recordings in other layouts; None for our own
+    source: Optional[dict[str, str]] = None
 
 
 @dataclass
@@ -107,7 +111,7 @@ def write_frame_set(directory: str | Path, meta: SceneMeta, intrinsics: Intrinsi
     """Create DIR/frames and write scene.json and intrinsics.json."""
     directory = Path(directory)
     (directory / "frames").mkdir(parents=True, exist_ok=True)
-    write_text(directory / "scene.json", meta.model_dump_json(indent=1))
+    write_text(directory / "scene.json", meta.model_dump_json(indent=1, exclude_none=True))
     write_text(directory / "intrinsics.json", intrinsics.model_dump_json(indent=1))
 
 
@@ -123,17 +127,56 @@ def write_frame(directory: str | Path, frame: Frame) -> None:
     write_text(base / f"{stem}.pose.txt",
                 "\n".join(" ".join(f"{v:.9g}" for v in row) for row in np.asarray(frame.pose)) + "\n")
     if frame.segmentation is not None:
-        seg = frame.segmentation
-        atomic_write(base / f"{stem}.seg.npz", lambda p: np.savez_compressed(
-            p, masks=seg.masks.astype(bool), embeddings=seg.embeddings.astype(np.float32),
-            scores=seg.scores.astype(np.float32)))
+        write_segmentation(base / f"{stem}.seg.npz", encode_segmentation(frame.segmentation))
     if frame.instance_ids is not None:
         if frame.instance_ids.max(initial=0) > np.iinfo(np.uint16).max:
             raise IesmError("instance ids above 65535 do not fit a uint16 png", base / f"{stem}.inst.png")
         write_png(base / f"{stem}.inst.png", frame.instance_ids.astype(np.uint16))
 
 
+def encode_segmentation(seg: Segmentation) -> bytes:
+    """The bytes of a seg.npz (np.savez_compressed, no pickles); the serial and the Ray paths of
+    `iesm segment` both write these, so their files are byte-comparable."""
+    import io
+
+    buffer = io.BytesIO()
+    np.savez_compressed(buffer, masks=seg.masks.astype(bool), embeddings=seg.embeddings.astype(np.float32),
+                        scores=seg.scores.astype(np.float32))
+    return buffer.getvalue()
+
+
+def write_segmentation(path: str | Path, data: bytes) -> None:
+    """Write encoded seg.npz bytes atomically."""
+    atomic_write(Path(path), lambda p: Path(p).write_bytes(data))
+
+
+def write_vocabulary(directory: str | Path, names: list[str], embeddings: np.ndarray,
+                     room_names: list[str] = (), room_embeddings: np.ndarray | None = None) -> None:
+    """DIR/vocabulary.npz: the category list `names` (J,) and its text embeddings (J, D) float32
+    in the masks' embedding space (made by the segmenter's own text tower, so `iesm build-map`
+    needs no model), optionally room names (R,) and their embeddings (R, D)."""
+    rooms = np.zeros((0, embeddings.shape[1]), np.float32) if room_embeddings is None else room_embeddings
+    atomic_write(Path(directory) / "vocabulary.npz", lambda p: np.savez_compressed(
+        p, names=np.array(list(names), dtype=str), embeddings=np.asarray(embeddings, np.float32),
+        room_names=np.array(list(room_names), dtype=str), room_embeddings=np.asarray(rooms, np.float32)))
+
+
+def write_frame_features(directory: str | Path, features: np.ndarray) -> None:
+    """DIR/frame_features.npz: `features` (N, D) float32, one L2-normalised image embedding per
+    frame (CLIP frame features for per-cell room labels)."""
+    atomic_write(Path(directory) / "frame_features.npz",
+                 lambda p: np.savez_compressed(p, features=np.asarray(features, np.float32)))
+
+
 # ---------------------------------------------------------------------------------------- reading
+
+
+def _read_npz(path: Path, keys: tuple[str, ...]) -> dict[str, np.ndarray]:
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            return {k: data[k] for k in keys}
+    except (OSError, ValueError, KeyError) as exc:
+        raise IesmError(f"not a readable npz with {', '.join(keys)} ({exc})", path) from None
 
 
 def _read_png(path: Path, color: bool) -> np.ndarray:
@@ -205,6 +248,26 @@ class FrameSet:
     def path(self, index: int, kind: str) -> Path:
         """Path of one frame file; `kind` is rgb.png, depth.png, pose.txt, seg.npz or inst.png."""
         return self.directory / "frames" / f"{frame_stem(index)}.{kind}"
+
+    def vocabulary(self) -> Optional[dict[str, np.ndarray]]:
+        """DIR/vocabulary.npz as arrays (names, embeddings, room_names, room_embeddings), or None."""
+        path = self.directory / "vocabulary.npz"
+        if not path.is_file():
+            return None
+        data = _read_npz(path, ("names", "embeddings", "room_names", "room_embeddings"))
+        if data["embeddings"].ndim != 2 or len(data["embeddings"]) != len(data["names"]):
+            raise IesmError(f"{len(data['names'])} names but embeddings of shape {data['embeddings'].shape}", path)
+        return data
+
+    def frame_features(self) -> Optional[np.ndarray]:
+        """DIR/frame_features.npz `features` (N, D) float32, or None when absent."""
+        path = self.directory / "frame_features.npz"
+        if not path.is_file():
+            return None
+        features = _read_npz(path, ("features",))["features"]
+        if features.ndim != 2 or len(features) != len(self):
+            raise IesmError(f"features have shape {features.shape}, the set has {len(self)} frames", path)
+        return features.astype(np.float32, copy=False)
 
     def read(self, index: int) -> Frame:
         if not 0 <= index < len(self):
