@@ -5,7 +5,8 @@ message (an empty block is left out). Templates are looked up by file name in th
 directories first, then in the shipped `prompts/`, so a user folder overrides any
 template by name. Data is fenced with the `fence` filter (JSON, with <, >, & escaped;
 `fence_lines` gives one such line per item), so untrusted captions cannot close a fence or
-inject instructions as markup.
+inject instructions as markup. Templates render in Jinja's sandbox: attribute access to
+internals (`__globals__`, `__subclasses__`, ...) is refused, so a template cannot run code.
 """
 
 from __future__ import annotations
@@ -59,12 +60,15 @@ class PromptLibrary:
 
     def __init__(self, dirs: Iterable[str | Path] = ()):
         import jinja2
+        from jinja2.sandbox import SandboxedEnvironment
 
         self.dirs = [Path(d) for d in dirs] + [resource_dir("prompts")]
         for d in self.dirs[:-1]:
             if not d.is_dir():
                 raise IesmError("prompt directory does not exist", d)
-        self._env = jinja2.Environment(
+        # sandboxed: a prompt directory is shared like code, but a template must not run code
+        # (`{{ cycler.__init__.__globals__.os.popen(...) }}` is a SecurityError)
+        self._env = SandboxedEnvironment(
             loader=jinja2.FileSystemLoader([str(d) for d in self.dirs]),
             undefined=jinja2.StrictUndefined,
             trim_blocks=True,
@@ -98,7 +102,7 @@ class PromptLibrary:
         except jinja2.TemplateNotFound as exc:
             raise IesmError(f"prompt template {name!r} not found in {[str(d) for d in self.dirs]}") from exc
         except jinja2.TemplateError as exc:
-            raise IesmError(f"cannot render prompt template: {exc}", name) from exc
+            raise IesmError(f"cannot render prompt template: {' '.join(str(exc).split())}", name) from None
         if not messages:
             raise IesmError("template renders no system or user block", name)
         return messages

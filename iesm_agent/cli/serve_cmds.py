@@ -21,10 +21,14 @@ def serve_command(
                                         help="Model spec callers may use (repeatable; the first is the default)."),
     allowed_hosts: list[str] = typer.Option([], "--allowed-host",
                                             help="Extra Host header name accepted over HTTP (repeatable)."),
+    insecure_no_token: bool = typer.Option(False, "--insecure-no-token",
+                                           help="Serve a non-loopback address without IESM_TOKEN (anyone who "
+                                                "reaches it may call the tools)."),
 ) -> None:
     """Serve goal retrieval and map tools to assistants over the Model Context Protocol.
 
-    Over HTTP, when IESM_TOKEN is set every request must carry `Authorization: Bearer <token>`."""
+    Over HTTP, when IESM_TOKEN is set every request must carry `Authorization: Bearer <token>`;
+    a non-loopback address needs IESM_TOKEN (or --insecure-no-token)."""
     if stdio and http:
         raise IesmError("choose one of --stdio and --http", None, "transport")
     try:
@@ -38,13 +42,16 @@ def serve_command(
     from ..server import MapService
 
     listen = app.parse_listen(http) if http is not None else None
+    token = os.environ.get("IESM_TOKEN") or None
+    if listen is not None:
+        app.check_exposure(listen[0], token, insecure_no_token)
     service = MapService.open(maps, tuple(dict.fromkeys(providers)))
     if listen is None:
         asyncio.run(app.serve_stdio(service))
         return
     host, port = listen
     try:
-        asyncio.run(app.serve_http(service, host, port, os.environ.get("IESM_TOKEN") or None, tuple(allowed_hosts)))
+        asyncio.run(app.serve_http(service, host, port, token, tuple(allowed_hosts)))
     except KeyboardInterrupt:
         pass
 

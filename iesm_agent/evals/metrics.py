@@ -120,10 +120,13 @@ def parse_thresholds(specs: Iterable[str]) -> dict[str, float]:
         try:
             if not sep or name.strip() not in THRESHOLD_METRICS:
                 raise ValueError
-            out[name.strip()] = float(value)
+            number = float(value)
+            if not 0.0 <= number <= 1.0:  # also refuses nan, which no value would ever fall below
+                raise ValueError
+            out[name.strip()] = number
         except ValueError:
-            raise IesmError(f"expected METRIC=VALUE with METRIC one of {', '.join(THRESHOLD_METRICS)}, "
-                            f"got {spec!r}", "--fail-under") from None
+            raise IesmError(f"expected METRIC=VALUE with METRIC one of {', '.join(THRESHOLD_METRICS)} and VALUE "
+                            f"a number from 0 to 1, got {spec!r}", "--fail-under") from None
     return out
 
 

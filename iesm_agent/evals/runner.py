@@ -16,9 +16,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Optional
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ..errors import IesmError
+from ..fileio import load_json, validation_message
 from ..providers.base import Model
 from ..retrieval.methods import is_method_name
 from .journal import ResultRecord, append_record, read_journal, repair_journal
@@ -133,9 +134,12 @@ def prepare_run_dir(run_dir: Path, config: RunConfig, resume: bool) -> None:
     stored = run_dir / RUN_CONFIG
     if resume and stored.exists():
         try:
-            previous = RunConfig.model_validate_json(stored.read_text(encoding="utf-8"))
-        except (OSError, ValueError) as exc:
-            raise IesmError(f"cannot read the stored run configuration: {exc}", stored) from exc
+            previous = RunConfig.model_validate(load_json(stored))
+        except IesmError as exc:
+            raise IesmError(f"cannot read the stored run configuration: {exc.message}", stored, exc.where) from None
+        except ValidationError as exc:
+            message, field = validation_message(exc)
+            raise IesmError(f"cannot read the stored run configuration: {message}", stored, field) from None
         old, new = previous.model_dump(), config.model_dump()
         changed = [k for k in new if old.get(k) != new[k]]
         if changed:
@@ -150,6 +154,19 @@ def prepare_run_dir(run_dir: Path, config: RunConfig, resume: bool) -> None:
     tmp = stored.with_suffix(".tmp")
     tmp.write_text(config.model_dump_json(indent=2) + "\n", encoding="utf-8")
     tmp.replace(stored)
+
+
+def check_variants(config: RunConfig) -> None:
+    """Every variant's method and prompt directory, and the expert directories, are usable
+    (an `IesmError` naming the first that is not)."""
+    from ..retrieval.experts import load_experts
+    from ..retrieval.methods import resolve_method
+
+    registry = load_experts(config.experts_dirs)
+    for variant in config.variants:
+        resolve_method(variant.method, registry)
+        if variant.prompts_dir is not None and not Path(variant.prompts_dir).is_dir():
+            raise IesmError("prompt directory does not exist", variant.prompts_dir)
 
 
 def _rank(ranking: list[int], accept: list[int]) -> Optional[int]:
@@ -189,7 +206,13 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     run_dir = Path(run_dir)
     registry = MapRegistry()
     suite = load_suites(config.suites, skip_invalid=config.skip_invalid, registry=registry)
-    prepare_run_dir(run_dir, config, resume)
+    check_variants(config)  # before the run directory is made: a typo leaves nothing behind
+    model = model or _build_model(config)
+    try:
+        prepare_run_dir(run_dir, config, resume)
+    except BaseException:
+        await model.aclose()
+        raise
     journal = run_dir / RESULTS
     repair_journal(journal)
     # the last record of a key wins (a resumed query replaces its failed record); queries whose
@@ -201,7 +224,6 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     if on_start:
         on_start(len(jobs))
 
-    model = model or _build_model(config)
     stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
     with_starts = {e.map_path for e in suite.entries if e.query.start is not None}
     navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory))

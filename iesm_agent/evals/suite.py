@@ -15,8 +15,8 @@ from typing import Annotated, Iterable, Optional
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from ..errors import IesmError
-from ..fileio import write_text
-from ..store.model import SceneMap
+from ..fileio import load_json, write_text
+from ..store.model import Id, Metres, SceneMap
 from ..store.refs import open_map, resolve_map_path
 
 #: a query type is a free short label; the paper's five (o, or, od, ord, ard) keep their meaning and
@@ -27,15 +27,15 @@ QueryType = Annotated[str, Field(min_length=1, max_length=24, pattern=r"^[A-Za-z
 class SuiteQuery(BaseModel):
     """One query: the instance `target` it was written for and the ids `accept`ed as correct."""
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     id: str = Field(min_length=1)
     map: str = Field(min_length=1)
     query: str = Field(min_length=1)
     type: Optional[QueryType] = None
-    target: int
-    accept: list[int] = Field(default_factory=list)
-    start: Optional[tuple[float, float]] = None  # (x, y) m: the robot's start for N-SR
+    target: Id
+    accept: list[Id] = Field(default_factory=list, max_length=10_000)
+    start: Optional[tuple[Metres, Metres]] = None  # (x, y) m: the robot's start for N-SR
     #: paraphrase group: lines with the same group are wordings of one intent
     group: Optional[str] = Field(default=None, min_length=1, max_length=200)
 
@@ -110,7 +110,8 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
     registry = registry or MapRegistry()
     suite = Suite()
     seen: dict[str, str] = {}
-    for path in map(Path, paths):
+    paths = [Path(p) for p in paths]
+    for path in paths:
         try:
             text = path.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
@@ -119,7 +120,7 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
             if not line.strip():
                 continue
             try:
-                query = SuiteQuery.model_validate(json.loads(line))
+                query = SuiteQuery.model_validate(load_json(line, path, f"line {number}"))
                 if query.id in seen:
                     raise ValueError(f"duplicate query id {query.id!r} (first at {seen[query.id]})")
                 map_path = _check(query, path, registry)
@@ -127,8 +128,10 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
                 err = exc.errors()[0]
                 loc = ".".join(str(p) for p in err["loc"])
                 error = IesmError(f"{loc}: {err['msg']}" if loc else err["msg"], path, f"line {number}")
-            except ValueError as exc:  # JSONDecodeError is a ValueError
+            except ValueError as exc:
                 error = IesmError(str(exc), path, f"line {number}")
+            except IesmError as exc:  # not JSON, or too large or deep
+                error = exc
             else:
                 seen[query.id] = f"{path}:{number}"
                 suite.entries.append(SuiteEntry(query, path, number, map_path))
@@ -136,6 +139,9 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
             if not skip_invalid:
                 raise error
             suite.errors.append(error)
+    if not suite.entries:
+        what = f"no valid query ({len(suite.errors)} invalid lines)" if suite.errors else "no query"
+        raise IesmError(f"the suites hold {what}", ", ".join(map(str, paths)) or None, "suite")
     return suite
 
 

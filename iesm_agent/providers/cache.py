@@ -3,8 +3,9 @@
 The key is the SHA-256 of canonical JSON of the inner model's `cache_identity()`, the
 messages and the options, so identical requests from any process or shard share entries.
 Errors and empty replies are not stored. A cache that cannot be opened or used (a file where
-the directory should be, a corrupt database, no permission) turns itself off with one
-`CacheWarning` and the calls go straight to the inner model.
+the directory should be, a corrupt database, a damaged settings table, a lock held elsewhere, no
+permission: any exception it raises) turns itself off with one `CacheWarning` and the calls go
+straight to the inner model.
 """
 
 from __future__ import annotations
@@ -66,8 +67,26 @@ class _TextDisk(diskcache.Disk):
         return super().fetch(mode, filename, value, read)
 
 
-#: what a broken cache raises: sqlite corruption/locking, file system errors, foreign entries
-_CACHE_ERRORS = (sqlite3.Error, OSError, ValueError, TypeError)
+#: what a broken cache raises: sqlite corruption/locking, file system errors, foreign entries,
+#: a damaged settings table (KeyError), diskcache's Timeout; any of them turns the cache off
+_CACHE_ERRORS = (Exception,)
+#: seconds a cache operation waits for a lock held elsewhere before the cache is turned off
+LOCK_TIMEOUT = 1.0
+
+
+def _probe(cache_dir: Path) -> None:
+    """Raise at once (within `LOCK_TIMEOUT`) when the cache database is locked or unreadable:
+    diskcache's own start-up runs a dozen statements, each waiting for the lock."""
+    db = cache_dir / "cache.db"
+    if not db.exists():
+        return
+    con = sqlite3.connect(str(db), timeout=LOCK_TIMEOUT, isolation_level=None)
+    try:
+        con.execute("BEGIN IMMEDIATE")
+        con.execute("SELECT key, value FROM Settings LIMIT 1").fetchall()
+        con.execute("ROLLBACK")
+    finally:
+        con.close()
 
 
 class CachedModel(Model):
@@ -129,7 +148,8 @@ class CachedModel(Model):
         with self._lock:
             if self._cache is None and self.disabled_reason is None:
                 try:
-                    self._cache = diskcache.Cache(str(self.cache_dir), disk=_TextDisk, timeout=5)
+                    _probe(self.cache_dir)
+                    self._cache = diskcache.Cache(str(self.cache_dir), disk=_TextDisk, timeout=LOCK_TIMEOUT)
                 except _CACHE_ERRORS as exc:
                     self._disable(exc)
             return self._cache
@@ -140,9 +160,9 @@ class CachedModel(Model):
             return None
         try:
             text = cache.get(key)
+        except (ValueError, TypeError):
+            return None  # one foreign entry: a miss (it is overwritten on store)
         except _CACHE_ERRORS as exc:
-            if isinstance(exc, (ValueError, TypeError)):
-                return None  # one foreign entry: a miss (it is overwritten on store)
             self._disable(exc)
             return None
         if not isinstance(text, str):

@@ -12,9 +12,15 @@ import json
 import re
 from typing import Any
 
+from ..errors import IesmError
+from ..fileio import load_json
+
 _THINK = re.compile(r"<think>.*?</think>", re.DOTALL | re.IGNORECASE)
 _FENCE = re.compile(r"```[ \t]*(?:json[a-z0-9]*)?[ \t]*\n?(.*?)```", re.DOTALL | re.IGNORECASE)
 _BARE_WORDS = {"True": "true", "False": "false", "None": "null"}
+#: largest reply parsed (bytes) and deepest nesting in it
+MAX_REPLY_BYTES = 8 * 1024 * 1024
+MAX_REPLY_DEPTH = 32
 #: at most this many `{` positions are tried, so a hostile reply cannot cost quadratic time
 _MAX_ATTEMPTS = 64
 
@@ -47,10 +53,6 @@ def parse_json_reply(text: str) -> dict[str, Any]:
     raise JsonReplyError(f"no JSON object in reply: {snippet!r}")
 
 
-def _reject_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not JSON")
-
-
 def _loads_dict(candidate: str) -> dict[str, Any] | None:
     """`candidate` parsed as a dict, directly or, when strict JSON fails, after `_normalise`
     (which costs a scan, so valid replies skip it); None otherwise."""
@@ -64,9 +66,11 @@ def _loads_dict(candidate: str) -> dict[str, Any] | None:
 
 
 def _strict_loads(text: str) -> Any:
+    """`text` as strict JSON (no NaN), bounded in size and depth (`fileio.load_json`: a hostile
+    reply nested 100,000 deep is no reply, not a RecursionError); None when it is not."""
     try:
-        return json.loads(text, parse_constant=_reject_constant)
-    except ValueError:
+        return load_json(text, max_bytes=MAX_REPLY_BYTES, max_depth=MAX_REPLY_DEPTH, allow_nan=False)
+    except IesmError:
         return None
 
 

@@ -37,7 +37,7 @@ from .. import __version__
 from ..errors import IesmError
 from ..store.tools import function_schema
 from .results import FindGoalResult, argument_problem
-from .tools import MapService
+from .tools import MapService, validate_arguments
 
 MCP_PATH = "/mcp"
 #: tools whose result is also structured content, with the model giving its output schema
@@ -80,8 +80,8 @@ def _as_mcp_tool(fn: Callable[..., Any]) -> Tool:
 
     @functools.wraps(fn)
     async def call(**arguments: Any) -> Any:
-        try:
-            result = await fn(**arguments)
+        try:  # the SDK's own check lets NaN, 1e308 and `true` through: ours is the one for every surface
+            result = await fn(**validate_arguments(fn, arguments))
         except IesmError as exc:
             raise ToolError(str(exc)) from exc
         text = [TextContent(type="text", text=json.dumps(result, indent=1))]  # one block, also for lists
@@ -128,9 +128,51 @@ def transport_security(host: str, extra_hosts: tuple[str, ...] = ()) -> Transpor
 
 
 def http_app(server: MCPServer, host: str, extra_hosts: tuple[str, ...] = ()):
-    """The Starlette app: streamable HTTP at `/mcp` (JSON responses, per-client sessions)."""
-    return server.streamable_http_app(streamable_http_path=MCP_PATH, json_response=True,
-                                      transport_security=transport_security(host, extra_hosts), host=host)
+    """The Starlette app: streamable HTTP at `/mcp` (JSON responses, per-client sessions), with
+    the Host and Origin headers lower-cased first (host names are case-insensitive)."""
+    extra_hosts = tuple(h.lower() for h in extra_hosts)
+    return lowercase_host_headers(server.streamable_http_app(
+        streamable_http_path=MCP_PATH, json_response=True,
+        transport_security=transport_security(host.lower(), extra_hosts), host=host))
+
+
+class lowercase_host_headers:  # noqa: N801 (an ASGI wrapper used like a function)
+    """ASGI wrapper lower-casing the `host` and `origin` request headers, so that the SDK's
+    DNS-rebinding check (which compares exactly) accepts `LOCALHOST:port` as `localhost:port`."""
+
+    def __init__(self, app):
+        self.app = app
+
+    def __getattr__(self, name: str) -> Any:  # the Starlette app's router, state, ...
+        return getattr(self.app, name)
+
+    async def __call__(self, scope, receive, send) -> None:
+        if scope.get("type") in ("http", "websocket"):
+            scope = dict(scope)
+            scope["headers"] = [(k, v.lower()) if k in (b"host", b"origin") else (k, v)
+                                for k, v in scope.get("headers", [])]
+        await self.app(scope, receive, send)
+
+
+def is_loopback(host: str) -> bool:
+    """Whether `host` (a name or address to bind) only listens on this machine."""
+    import ipaddress
+
+    name = host.strip("[]").lower()
+    if name == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(name).is_loopback
+    except ValueError:
+        return False
+
+
+def check_exposure(host: str, token: str | None, insecure_no_token: bool) -> None:
+    """Refuse to serve a non-loopback address without a bearer token, unless told explicitly."""
+    if token or insecure_no_token or is_loopback(host):
+        return
+    raise IesmError(f"refusing to serve {host} (reachable from other machines) without a token: set "
+                    "IESM_TOKEN, bind 127.0.0.1, or pass --insecure-no-token", None, "--http")
 
 
 def bind(host: str, port: int) -> socket.socket:

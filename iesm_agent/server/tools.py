@@ -19,6 +19,7 @@ import asyncio
 import importlib.util
 import inspect
 import sys
+import types
 import typing
 from typing import Any, Callable, Literal, Optional
 
@@ -27,6 +28,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError, create_model
 from ..errors import IesmError
 from ..store import MapStore
 from ..store import mapstore as mapstore_module
+from ..store.model import Id, Metres
 from ..store.tools import function_schema
 from .results import FindGoalResult, Ranked, argument_problem, place
 from .workers import OffLoopModel, WorkerPool
@@ -257,11 +259,7 @@ class MapService:
         if tool is None:
             raise IesmError(f"unknown tool {name!r}; known: {', '.join(t.__name__ for t in self.tools())}",
                             None, "name")
-        try:
-            valid = arguments_model(tool).model_validate(arguments)
-        except ValidationError as exc:
-            raise IesmError(argument_problem(name, exc)) from None
-        return await tool(**{field: getattr(valid, field) for field in type(valid).model_fields})
+        return await tool(**validate_arguments(tool, arguments))
 
     def tools(self) -> list[Callable[..., Any]]:
         """Every tool, as async functions whose signature and docstring are their schema:
@@ -271,12 +269,42 @@ class MapService:
         return server_tools + [self._store_tool(n) for n in mapstore_module.TOOLS]
 
 
+def bounded(tp: Any) -> Any:
+    """`tp` with every `float` made a finite number within +-MAX_COORD (`Metres`) and every `int`
+    an `Id` (not a boolean, 32 bits), inside tuples, lists and Optionals too."""
+    if tp is float:
+        return Metres
+    if tp is int:
+        return Id
+    origin, args = typing.get_origin(tp), typing.get_args(tp)
+    if origin is None or not args:
+        return tp
+    inner = tuple(a if a is Ellipsis else bounded(a) for a in args)
+    if origin in (typing.Union, types.UnionType):
+        return typing.Union[inner]
+    if origin in (tuple, list, dict, set, frozenset):
+        return origin[inner] if len(inner) > 1 else origin[inner[0]]
+    return tp
+
+
 def arguments_model(tool: Callable[..., Any]) -> type[BaseModel]:
-    """A pydantic model of `tool`'s parameters (unknown arguments are refused)."""
+    """A pydantic model of `tool`'s parameters (unknown arguments are refused; numbers must be
+    finite and in range, see `bounded`)."""
     hints = typing.get_type_hints(tool)
-    fields = {p.name: (hints.get(p.name, Any), ... if p.default is p.empty else p.default)
+    fields = {p.name: (bounded(hints.get(p.name, Any)), ... if p.default is p.empty else p.default)
               for p in inspect.signature(tool).parameters.values()}
-    return create_model(f"{tool.__name__}_arguments", __config__=ConfigDict(extra="forbid"), **fields)
+    return create_model(f"{tool.__name__}_arguments", __config__=ConfigDict(extra="forbid", allow_inf_nan=False),
+                        **fields)
+
+
+def validate_arguments(tool: Callable[..., Any], arguments: dict[str, Any]) -> dict[str, Any]:
+    """`arguments` validated against `tool`'s signature (`arguments_model`), or an `IesmError`
+    in one sentence naming the argument."""
+    try:
+        valid = arguments_model(tool).model_validate(arguments)
+    except ValidationError as exc:
+        raise IesmError(argument_problem(tool.__name__, exc)) from None
+    return {field: getattr(valid, field) for field in type(valid).model_fields}
 
 
 def navigation_available() -> bool:

@@ -25,7 +25,8 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ...errors import MapFormatError
-from ..model import GridSpec, Instance, InstanceGrid, Room, SceneMap
+from ...fileio import load_json
+from ..model import MAX_COORD, MAX_ID, GridSpec, Id, Instance, InstanceGrid, Room, SceneMap
 from . import check_grid_size, field_path, read_json
 
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "<i2", "int16": "<i2",
@@ -42,7 +43,7 @@ class _Entry(BaseModel):
 
     category: str
     room_cat: Optional[str] = None
-    room_id: Optional[int] = None
+    room_id: Optional[Id] = None
     top5_categories: list[str] = []
     caption: Union[str, dict[str, Any], None] = None
 
@@ -57,8 +58,8 @@ def parse_inner_caption(text: Union[str, dict, None]) -> tuple[dict[str, Any], s
         return text, "ok"
     for status, candidate in (("ok", text), ("repaired", _TRAILING_COMMA.sub(r"\1", text))):
         try:
-            value = json.loads(candidate)
-        except json.JSONDecodeError:
+            value = load_json(candidate, error=MapFormatError)  # bounded: a caption is data
+        except MapFormatError:
             continue
         if isinstance(value, dict):
             return value, status
@@ -138,8 +139,8 @@ def _load_entries(path: Path) -> dict[int, _Entry]:
         raise MapFormatError("expected a JSON object of instance id -> entry", path)
     entries = {}
     for key, value in data.items():
-        if not key.strip().lstrip("-").isdigit():
-            raise MapFormatError("instance key is not an integer id", path, repr(key))
+        if not key.strip().lstrip("-").isdigit() or abs(int(key)) > MAX_ID:
+            raise MapFormatError("instance key is not an integer id of at most 32 bits", path, repr(key))
         if int(key) in entries:  # e.g. "7" and "07": one instance would silently replace the other
             raise MapFormatError(f"duplicate instance id {int(key)}", path, repr(key))
         try:
@@ -204,6 +205,8 @@ def _with_ply(scene_id: str, source: str, instances: list[Instance], rooms: list
     cols, rows, z = v["x"].astype(np.float64), v["y"].astype(np.float64), v["z"].astype(np.float64)
     if not (np.all(np.isfinite(cols)) and np.all(np.isfinite(rows)) and np.all(np.isfinite(z))):
         raise MapFormatError("non-finite vertex coordinates", ply_path, "vertex")
+    if len(v) and np.abs(z).max() * cell_size > MAX_COORD:
+        raise MapFormatError(f"vertex heights beyond {MAX_COORD:g} m", ply_path, "vertex")
     cols, rows = np.rint(cols).astype(np.int64), np.rint(rows).astype(np.int64)
     if len(v) and (cols.min() < 0 or rows.min() < 0):
         raise MapFormatError("negative cell index in x or y", ply_path, "vertex")
