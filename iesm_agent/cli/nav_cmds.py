@@ -10,6 +10,11 @@ from typing import Optional
 import typer
 
 from ..errors import IesmError
+from ..fileio import read_npz
+
+
+#: largest --robot-radius (m)
+MAX_ROBOT_RADIUS = 10.0
 
 
 def _parse_xy(text: str) -> tuple[float, float]:
@@ -17,7 +22,7 @@ def _parse_xy(text: str) -> tuple[float, float]:
         x, y = (float(v) for v in text.split(","))
     except ValueError:
         raise IesmError(f"expected X,Y in metres, got {text!r}", None, "--start") from None
-    if not all(map(lambda v: abs(v) < 1e6, (x, y))):
+    if not all(map(lambda v: abs(v) < 1e6, (x, y))):  # False for nan
         raise IesmError(f"expected finite X,Y in metres, got {text!r}", None, "--start")
     return x, y
 
@@ -28,13 +33,14 @@ def _load_cell_labels(path: Path, shape: tuple[int, int]):
 
     from ..rooms import CellLabels
 
-    try:
-        with np.load(path, allow_pickle=False) as data:
-            labels, names = data["labels"], [str(n) for n in data["names"]]
-    except (OSError, ValueError, KeyError) as exc:
-        raise IesmError(f"not a readable cell-label npz with 'labels' and 'names' ({exc})", path) from None
-    if labels.shape != shape or labels.dtype.kind not in "iu":
-        raise IesmError(f"labels must be integer {shape} (the map grid), got {labels.dtype} {labels.shape}", path)
+    def check(name: str, found: tuple[int, ...], dtype) -> None:  # before the array is read
+        if name == "labels" and (found != shape or dtype.kind not in "iu"):
+            raise IesmError(f"labels must be integer {shape} (the map grid), got {dtype} {found}", path)
+        if name == "names" and (len(found) != 1 or found[0] > 100_000):
+            raise IesmError(f"names must be a list of at most 100,000 strings, got shape {found}", path)
+
+    data = read_npz(path, ("labels", "names"), kinds={"labels": "iu", "names": "U"}, check=check)
+    labels, names = data["labels"], [str(n) for n in data["names"]]
     if labels.max(initial=-1) >= len(names) or labels.min(initial=-1) < -1:
         raise IesmError(f"label indices must be -1 or below {len(names)} (the number of names)", path)
     return CellLabels(labels.astype(np.int32), names)
@@ -50,7 +56,7 @@ def register(app: typer.Typer) -> None:
         cell_labels: Optional[Path] = typer.Option(None, "--cell-labels",
                                                    help=".npz with per-cell labels (H, W) and names (real data)"),
         split: bool = typer.Option(True, "--split/--no-split", help="contextual split of open-plan space"),
-        seed: int = typer.Option(0, "--seed", help="seed of the simulated labels"),
+        seed: int = typer.Option(0, "--seed", min=0, max=2**32 - 1, help="seed of the simulated labels"),
     ) -> None:
         """Segment rooms; store rooms, room map, each instance's room and the obstacle map."""
         from ..nav import with_obstacles
@@ -93,8 +99,9 @@ def register(app: typer.Typer) -> None:
         xy = _parse_xy(start)
         if png is not None and not png.parent.resolve().is_dir():
             raise IesmError("output directory does not exist", png)
-        if robot_radius < 0:
-            raise IesmError("must not be negative", None, "--robot-radius")
+        if not 0 <= robot_radius <= MAX_ROBOT_RADIUS:  # also refuses nan
+            raise IesmError(f"expected a radius from 0 to {MAX_ROBOT_RADIUS:g} m, got {robot_radius}", None,
+                            "--robot-radius")
         planning = PlanningGrid(open_map(map_path), ObstacleConfig(robot_radius=robot_radius))
         result = planning.plan(to, xy)
         if result.status == "unknown_instance":

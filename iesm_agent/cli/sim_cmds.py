@@ -2,17 +2,21 @@
 
 from __future__ import annotations
 
-import json
 import os
 import shutil
-import tempfile
 from pathlib import Path
 from typing import Optional
 
 import typer
 
 from ..errors import IesmError
+from ..fileio import temp_dir
 from .progress import progress_bar
+
+
+#: directories a frame directory of ours holds; besides them only files of these kinds
+_FRAME_DIR_DIRS = {"frames", "gt"}
+_FRAME_DIR_FILES = {".json", ".npz", ".iesm", ".png", ".txt", ".md"}
 
 
 def _check_out(out: Path, force: bool) -> None:
@@ -23,6 +27,26 @@ def _check_out(out: Path, force: bool) -> None:
             raise IesmError("exists and is not a directory", out)
         if any(out.iterdir()) and not force:
             raise IesmError("directory is not empty (use --force to replace it)", out)
+        if force and any(out.iterdir()) and not _looks_like_frames(out):
+            raise IesmError("--force replaces only a frame directory made by `iesm sim` (scene.json of format "
+                            "iesm-frames, frames/, no other directories than gt/): not deleting it", out)
+
+
+def _looks_like_frames(out: Path) -> bool:
+    """Whether `out` is a frame directory of ours: its scene.json says so and it holds nothing
+    a frame directory does not."""
+    from ..fileio import load_json
+
+    try:
+        scene = load_json(out / "scene.json", max_bytes=1024 * 1024)
+    except IesmError:
+        return False
+    ours = all(p.name in _FRAME_DIR_DIRS if p.is_dir() else p.suffix.lower() in _FRAME_DIR_FILES
+               for p in out.iterdir())
+    return (ours and isinstance(scene, dict) and scene.get("format") == "iesm-frames"
+            and (out / "frames").is_dir() and not (out / "frames").is_symlink())
+
+
 
 
 def _load_faults(path: Optional[Path], seed: int):
@@ -32,21 +56,23 @@ def _load_faults(path: Optional[Path], seed: int):
 
     if path is None:
         return FaultConfig(seed=seed)
+    from ..fileio import load_json, validation_message
+
+    data = load_json(path, max_bytes=1024 * 1024)
+    if not isinstance(data, dict):
+        raise IesmError("a fault config is a JSON object", path)
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
         return FaultConfig.model_validate({"seed": seed, **data})
-    except (OSError, ValueError) as exc:
-        if isinstance(exc, ValidationError):
-            err = exc.errors()[0]
-            raise IesmError(err["msg"], path, ".".join(str(p) for p in err["loc"])) from None
-        raise IesmError(f"not a readable JSON fault config ({exc})", path) from None
+    except ValidationError as exc:
+        message, field = validation_message(exc)
+        raise IesmError(message, path, field) from None
 
 
 def register(app: typer.Typer) -> None:
     @app.command("sim")
     def sim_cmd(
         out: Path = typer.Option(..., "--out", help="frame directory to create"),
-        seed: int = typer.Option(0, "--seed", help="scene seed (same seed, same scene)"),
+        seed: int = typer.Option(0, "--seed", min=0, max=2**32 - 1, help="scene seed (same seed, same scene)"),
         size: str = typer.Option("small", "--size", help="small (a flat, ~75 instances) | hm3d (30 m x 30 m, ~330 instances)"),
         open_plan: bool = typer.Option(False, "--open-plan", help="two public rooms share no wall"),
         faults: Optional[Path] = typer.Option(None, "--faults", help="JSON segmenter fault config (FaultConfig)"),
@@ -61,7 +87,7 @@ def register(app: typer.Typer) -> None:
         _check_out(out, force)
         config = _load_faults(faults, seed)
         world = generate_scene(seed, size, open_plan)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.resolve().parent))
+        tmp = temp_dir(out)  # named as our temporary files: a killed run's is removed by the next
         try:
             with progress_bar("rendering") as bar:
                 task = bar.add_task("frames", total=len(world.poses))
