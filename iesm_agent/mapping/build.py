@@ -15,6 +15,9 @@ from ..store.model import SceneMap
 from .dictionary import InstanceDictionary
 from .project import project_candidates
 
+TEXT_SPACES = ("all-MiniLM-L6-v2", "hash-384")  # spaces `text_vectors` embeds categories in
+UNLABELLED = "object"  # the label of instances from a segmenter without categories
+
 
 class MapBuilder:
     """Incremental builder: `add(frame, segmentation)` per frame, then `finish(...)`."""
@@ -53,14 +56,22 @@ class MapBuilder:
                             embedding_space=embedding_space, meta=meta)
 
 
-def category_vectors(frames: FrameSet) -> tuple[list[str], np.ndarray]:
-    """The scene's category list and its text embeddings E (J, D), in the masks' embedding space."""
+def category_vectors(frames: FrameSet) -> tuple[list[str], np.ndarray | None]:
+    """The scene's category list and its text embeddings E (J, D), in the masks' embedding space:
+    from DIR/vocabulary.npz when the segmenter wrote one (its own text tower), else embedded with
+    `text_vectors`. A space with no text tower and no categories (the geometric segmenter) gives
+    (["object"], None): every instance is an "object"."""
     from ..embeddings import text_vectors
 
+    vocab = frames.vocabulary()
+    if vocab is not None and len(vocab["names"]):
+        return [str(n) for n in vocab["names"]], vocab["embeddings"].astype(np.float32)
     categories = list(frames.meta.categories)
     if not categories:
-        raise IesmError("scene.json has an empty 'categories' list (needed to label instances)",
-                        frames.directory / "scene.json", "categories")
+        if frames.meta.embedding_space in TEXT_SPACES:
+            raise IesmError("scene.json has an empty 'categories' list (needed to label instances)",
+                            frames.directory / "scene.json", "categories")
+        return [UNLABELLED], None
     e, _space = text_vectors(categories, frames.meta.embedding_space)
     return categories, e
 
@@ -80,11 +91,15 @@ def build_map(frames: FrameSet, cfg: MappingConfig | None = None, *, second_pass
         seg = segmenter.segment(frame) if segmenter is not None else frame.segmentation
         if seg is None:
             raise IesmError("segmentation file is missing (or pass a segmenter)", frames.path(i, "seg.npz"))
+        if e is None:
+            e = np.zeros((1, seg.embeddings.shape[1]), np.float32)  # no categories: all "object"
         if seg.embeddings.shape[1] != e.shape[1]:
             raise IesmError(f"mask embeddings have dimension {seg.embeddings.shape[1]}, the scene's embedding "
                             f"space {frames.meta.embedding_space!r} has {e.shape[1]}", frames.path(i, "seg.npz"))
         builder.add(frame, seg)
         if on_frame is not None:
             on_frame(i)
+    if e is None:
+        e = np.zeros((1, 1), np.float32)
     return builder.finish(categories, e, scene_id=frames.meta.scene_id,
                           embedding_space=frames.meta.embedding_space, second_pass=second_pass)
