@@ -22,7 +22,7 @@ pytestmark = pytest.mark.slow
 def built(tmp_path_factory):
     root = tmp_path_factory.mktemp("sim")
     frames, built_map = root / "frames", root / "built.iesm"
-    assert run(["sim", "--seed", "1", "--out", str(frames)]) == 0
+    assert run(["sim", "--seed", "1", "--out", str(frames), "--realism", "easy"]) == 0
     assert run(["build-map", str(frames), "-o", str(built_map)]) == 0
     return frames, built_map
 

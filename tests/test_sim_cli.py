@@ -20,7 +20,7 @@ def sim_dir(tmp_path_factory):
         mp.setenv("IESM_EMBEDDINGS", "0")  # the hash space: no model load in this test
         parent = tmp_path_factory.mktemp("sim")
         out = parent / "flat"
-        assert run(["sim", "--seed", "1", "--out", str(out), "--open-plan"]) == 0
+        assert run(["sim", "--seed", "1", "--out", str(out), "--open-plan", "--realism", "easy"]) == 0
         return out
 
 
@@ -59,7 +59,7 @@ def test_sim_refuses_a_non_empty_directory_and_force_replaces(sim_dir, capsys, m
     err = capsys.readouterr().err.strip()
     assert err.startswith("iesm: error:") and "not empty" in err and str(sim_dir) in err and "\n" not in err
     assert json.loads((sim_dir / "scene.json").read_text()) == before
-    assert run(["sim", "--seed", "2", "--out", str(sim_dir), "--force"]) == 0
+    assert run(["sim", "--seed", "2", "--out", str(sim_dir), "--force", "--realism", "easy"]) == 0
     out = capsys.readouterr().out
     assert "sim-small-2" in out and "rooms" in out and "frames" in out and "stacked" in out and str(sim_dir) in out
     assert json.loads((sim_dir / "scene.json").read_text())["scene_id"] == "sim-small-2"

@@ -47,8 +47,6 @@ def _looks_like_frames(out: Path) -> bool:
             and (out / "frames").is_dir() and not (out / "frames").is_symlink())
 
 
-
-
 def _load_faults(path: Optional[Path], seed: int):
     from pydantic import ValidationError
 
@@ -76,14 +74,19 @@ def register(app: typer.Typer) -> None:
         size: str = typer.Option("small", "--size", help="small (a flat, ~75 instances) | hm3d (30 m x 30 m, ~330 instances)"),
         open_plan: bool = typer.Option(False, "--open-plan", help="two public rooms share no wall"),
         faults: Optional[Path] = typer.Option(None, "--faults", help="JSON segmenter fault config (FaultConfig)"),
+        realism: str = typer.Option("realistic", "--realism",
+                                    help="realistic (sensor noise, lighting, mask and embedding errors) | easy "
+                                         "(exact depth, flat shading, near-exact masks: for unit tests)"),
         force: bool = typer.Option(False, "--force", help="replace a non-empty existing DIR"),
     ) -> None:
         """Generate a synthetic apartment: RGB-D frames, poses, masks + embeddings, ground truth."""
         from ..sim import generate_scene, render_frames
         from ..sim.catalog import PROGRAMS
+        from ..sim.realism import get_profile
 
         if size not in PROGRAMS:
             raise IesmError(f"unknown --size {size!r} (choose from {', '.join(PROGRAMS)})")
+        profile = get_profile(realism)
         _check_out(out, force)
         config = _load_faults(faults, seed)
         world = generate_scene(seed, size, open_plan)
@@ -91,7 +94,7 @@ def register(app: typer.Typer) -> None:
         try:
             with progress_bar("rendering") as bar:
                 task = bar.add_task("frames", total=len(world.poses))
-                summary = render_frames(world, tmp, config, progress=lambda i: bar.advance(task))
+                summary = render_frames(world, tmp, config, progress=lambda i: bar.advance(task), realism=profile)
             if out.exists():
                 old = tmp.with_name(tmp.name + ".old")
                 os.replace(out, old)
@@ -106,5 +109,5 @@ def register(app: typer.Typer) -> None:
         print(f"scene {summary['scene_id']}: {summary['rooms']} rooms, {summary['instances']} instances "
               f"({summary['structural']} walls/doors/windows, {summary['stacked']} stacked), "
               f"{summary['frames']} frames; {summary['seen']} instances seen; open plan: {opened}")
-        print(f"embedding space: {summary['embedding_space']}")
+        print(f"embedding space: {summary['embedding_space']}; realism: {summary['realism']}")
         print(f"wrote {out}/ (scene.json, intrinsics.json, frames/, gt/)")

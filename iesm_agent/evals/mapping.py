@@ -1,17 +1,23 @@
 """Evaluation of a built map against simulator ground truth (`iesm eval-map`), and of the 2D
 point-wise baseline on the same ground truth (see `metrics` for the definitions).
 
-Ground-truth top-down masks are the *observed* footprints: every pixel of the ground-truth
-instance images (DIR/frames/*.inst.png) with depth, projected with the same intrinsics and poses
-as the built map. So a tall wardrobe whose top the camera never sees is judged on the faces it
-did see, and what is scored is segmentation, association, fusion and labelling, not geometry no
-method could observe. Instances evaluated: those with at least `min_mask_pixels` such pixels.
-Without instance images the box footprints of gt/cells.npz and every object are used.
+Two ground truths for the top-down masks (`footprint`):
+* "observed" (default): every pixel of the ground-truth instance images (DIR/frames/*.inst.png)
+  projected with the exact depth (DIR/gt/depth/, written under a realism profile with a depth
+  sensor model; else the frames' depth, which is exact under `easy`), the same intrinsics and
+  poses. So a tall wardrobe whose top the camera never sees is judged on the faces it did see,
+  and what is scored is segmentation, association, fusion and labelling.
+* "full": each instance's whole box footprint (gt/cells.npz), what a perfect map of the object
+  would hold whether seen or not.
+Instances evaluated (both): those with at least `min_mask_pixels` observed pixels. Without
+instance images the box footprints of gt/cells.npz and every object are used.
 
-Small objects: instances of categories whose mean footprint (gt/cells.npz) is in the bottom 20 %
-of instance footprints (per scene). Stacked objects: instances more than half of whose footprint
-cells also hold one other instance in the ground-truth 2.5D map (gt/cells.npz): a cup on a table,
-a lamp on a nightstand, a picture on a wall, and the furniture they stand on when it is small.
+Small objects: per dataset as the paper defines them, categories whose mean instance footprint
+is in the bottom 20 % of instance footprints, pooled over the dataset: for simulated scenes over
+the tuning worlds (seeds 0-4) of the scene's `--size` (`dataset_small_categories`), else over the
+scene itself. Stacked objects: instances more than half of whose footprint cells also hold one
+other instance in the ground-truth 2.5D map (gt/cells.npz): a cup on a table, a lamp on a
+nightstand, a picture on a wall, and the furniture they stand on when it is small.
 """
 
 from __future__ import annotations
@@ -19,6 +25,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
+
+import functools
+import json
 
 import numpy as np
 
@@ -54,17 +63,23 @@ class EvalContext:
     stacked: set[int]
     cfg: MappingConfig
 
+    footprint: str = "observed"
+
     @classmethod
-    def create(cls, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None) -> "EvalContext":
+    def create(cls, gt: GroundTruth, frames_dir: str | Path, cfg: MappingConfig | None = None,
+               footprint: str = "observed") -> "EvalContext":
+        """`footprint`: "observed" or "full" ground-truth masks (see the module docstring)."""
         cfg = cfg or MappingConfig()
         frames = FrameSet.open(frames_dir)
         categories, e = category_vectors(frames)
         index = {c.lower(): j for j, c in enumerate(categories)}
         labels = {int(o["id"]): str(o["label"]) for o in gt.objects}
-        observed = observed_footprints(frames, gt.grid, cfg)
+        observed = observed_footprints(frames, gt.grid, cfg, Path(frames_dir) / "gt" / "depth")
         flat, ids, top = observed[:3] if observed is not None else gt.cells.entries()
         seen = set(np.flatnonzero(observed[3] >= cfg.min_mask_pixels).tolist()) if observed is not None else set(labels)
         keep_ids = np.array(sorted(set(labels) & set(np.unique(ids).tolist()) & seen), np.int64)
+        if footprint == "full":
+            flat, ids, top = gt.cells.entries()
         sel = np.isin(ids, keep_ids)
         flat, ids, top = flat[sel], ids[sel], top[sel]
         gt_class = {i: index.get(labels[i].lower(), -1) for i in keep_ids.tolist()}
@@ -74,7 +89,9 @@ class EvalContext:
         cell_classes = topmost_labels(flat, ids, top, cell_class, gt.grid.height * gt.grid.width)
         box_flat, box_ids, _ = gt.cells.entries()
         area = np.bincount(box_ids, minlength=int(keep_ids.max(initial=0)) + 1)[keep_ids]
-        small_labels = small_categories([labels[i] for i in keep_ids.tolist()], area, cfg.small_fraction)
+        size = _sim_size(Path(frames_dir))
+        small_labels = (dataset_small_categories(size, cfg.small_fraction) if size is not None else
+                        small_categories([labels[i] for i in keep_ids.tolist()], area, cfg.small_fraction))
         small = {i for i in keep_ids.tolist() if labels[i] in small_labels}
         in_eval = np.isin(box_ids, keep_ids)
         a, b, inter = intersections(box_flat[in_eval], box_ids[in_eval], box_flat[in_eval], box_ids[in_eval])
@@ -82,13 +99,42 @@ class EvalContext:
         on_other = (a != b) & (inter > STACKED_SHARE * box_area[a])
         stacked = set(np.unique(a[on_other]).tolist())
         return cls(gt, categories, e, keep_ids, gt_class, (flat, ids, top), cell_classes, small, small_labels,
-                   stacked, cfg)
+                   stacked, cfg, footprint)
 
 
-def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig
+def _sim_size(frames_dir: Path) -> Optional[str]:
+    """The simulator `--size` a frame directory was made with (gt/sim.json), else None."""
+    try:
+        return str(json.loads((frames_dir / "gt" / "sim.json").read_text(encoding="utf-8"))["size"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+@functools.lru_cache(maxsize=8)
+def dataset_small_categories(size: str, fraction: float = 0.2) -> frozenset[str]:
+    """Small categories of a simulated dataset (`--size`), pooled over its tuning worlds (seeds
+    0-4, walled): categories whose mean box footprint is within the bottom `fraction` of all
+    instance footprints."""
+    from ..sim import generate_scene
+
+    labels, areas = [], []
+    for seed in range(5):
+        world = generate_scene(seed, size)
+        _, ids, _ = world.instance_grid().entries()
+        count = np.bincount(ids, minlength=len(world.instances) + 1)
+        for inst in world.instances:
+            labels.append(inst.label)
+            areas.append(count[inst.id])
+    return frozenset(small_categories(labels, np.array(areas), fraction))
+
+
+def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, exact_depth: Optional[Path] = None
                         ) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
     """(flat cell in `grid`, gt id, top m) per observed (cell, id), and pixel counts per id, from
-    the instance images, depth and poses of `frames`; None when no frame has an instance image."""
+    the instance images, depth and poses of `frames`; None when no frame has an instance image.
+    Depth comes from `exact_depth`/NNNNNN.png (millimetres) where that file exists."""
+    import cv2
+
     k = frames.intrinsics
     parts, counts = [], np.zeros(1, np.int64)
     for i in range(len(frames)):
@@ -97,6 +143,9 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig
         frame = frames.read(i)
         inst = frame.instance_ids.ravel()
         depth = frame.depth
+        exact = exact_depth / f"{i:06d}.png" if exact_depth is not None else None
+        if exact is not None and exact.is_file():
+            depth = cv2.imread(str(exact), cv2.IMREAD_UNCHANGED).astype(np.float32) / 1000.0
         pixels = np.flatnonzero((inst > 0) & (depth.ravel() > 0) & (depth.ravel() <= cfg.max_depth))
         keys, z = pixel_cells(depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size)
         flat = keys_in_grid(keys, cfg.cell_size, grid)

@@ -21,8 +21,8 @@ MAX_DEPTH = 10.0  # m; farther hits keep their colour and id but get depth 0 (no
 AMBIENT = 0.985  # shade of faces turned away from the light; the brightest face gets 1.0
 LIGHT = np.array([0.3, 0.5, 0.81]) / np.linalg.norm([0.3, 0.5, 0.81])
 # face index = 2 * axis + (1 if the ray travels towards +axis, i.e. it hits the face with normal -axis)
-_FACE_NORMALS = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
-FACE_SHADE = AMBIENT + (1 - AMBIENT) * np.maximum(_FACE_NORMALS @ LIGHT, 0.0) / LIGHT.max()
+FACE_NORMALS = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
+FACE_SHADE = AMBIENT + (1 - AMBIENT) * np.maximum(FACE_NORMALS @ LIGHT, 0.0) / LIGHT.max()
 _CORNERS = np.array([[i >> 0 & 1, i >> 1 & 1, i >> 2 & 1] for i in range(8)])
 _EDGES = np.array([(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1])
 
@@ -30,11 +30,16 @@ _EDGES = np.array([(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ 
 @dataclass
 class RenderedFrame:
     """rgb (H, W, 3) uint8; depth (H, W) float32 metres (0 = none); instance_ids (H, W) int32
-    (0 = floor, ceiling or nothing)."""
+    (0 = floor, ceiling or nothing); `hit` (H, W) palette row hit (box index, then floor, ceiling,
+    nothing), `face` (H, W) face index (see FACE_NORMALS) and `t` (H, W) float32 depth before the
+    range cut (inf = nothing): what `sensor.SensorModel` re-shades."""
 
     rgb: np.ndarray
     depth: np.ndarray
     instance_ids: np.ndarray
+    hit: np.ndarray | None = None
+    face: np.ndarray | None = None
+    t: np.ndarray | None = None
 
 
 class BoxRenderer:
@@ -135,4 +140,4 @@ class BoxRenderer:
         ids = np.zeros((h, w), np.int32)
         on_box = hit < n_boxes
         ids[on_box] = self.ids[hit[on_box]]
-        return RenderedFrame(np.clip(np.rint(rgb), 0, 255).astype(np.uint8), depth, ids)
+        return RenderedFrame(np.clip(np.rint(rgb), 0, 255).astype(np.uint8), depth, ids, hit, face, zbuf)

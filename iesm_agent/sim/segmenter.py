@@ -13,6 +13,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from ..embeddings import text_vectors
 from ..errors import IesmError
 from ..frames import Frame, Segmentation
+from .realism import EASY, Realism
 
 DEFAULT_CONFUSABLES: dict[str, list[str]] = {
     "stool": ["chair"], "office chair": ["chair"], "armchair": ["sofa"], "bench": ["sofa"],
@@ -67,14 +68,24 @@ class FaultLog:
 
 class SyntheticSegmenter:
     """Implements the `Segmenter` protocol from ground-truth instance ids. `labels` maps
-    instance id -> category label; `space` the embedding space (None: the best available)."""
+    instance id -> category label; `space` the embedding space (None: the best available);
+    `realism` the profile (sim/realism.py; default easy: masks are the instance pixels with the
+    `config` faults, embeddings the label vector plus isotropic noise); `vocabulary` the
+    categories whose similarities realistic embedding errors follow (default: the labels)."""
 
-    def __init__(self, labels: dict[int, str], config: FaultConfig | None = None, space: str | None = None):
+    def __init__(self, labels: dict[int, str], config: FaultConfig | None = None, space: str | None = None,
+                 realism: Realism | None = None, vocabulary: list[str] | None = None):
+        from .embedding_noise import EmbeddingNoise
+
         self.labels = labels
         self.config = config or FaultConfig()
-        names = sorted(set(labels.values()) | {c for cs in self.config.confusables.values() for c in cs})
+        self.realism = realism or EASY
+        names = sorted(set(labels.values()) | {c for cs in self.config.confusables.values() for c in cs}
+                       | set(vocabulary or ()))
         vectors, self.space = text_vectors(names, space)
         self.vectors = dict(zip(names, vectors))
+        self.noise = None if self.realism.easy else EmbeddingNoise(
+            self.vectors, self.realism, self.config.seed)
 
     def segment(self, frame: Frame) -> Segmentation:
         return self.segment_with_log(frame)[0]
@@ -92,6 +103,18 @@ class SyntheticSegmenter:
             noise = rng.standard_normal(vec.shape)
             vec = vec + cfg.embedding_noise * noise / np.linalg.norm(noise)
         return (vec / np.linalg.norm(vec)).astype(np.float32)
+
+    def _embed_realistic(self, instance: int, label: str, piece: np.ndarray, true_mask: np.ndarray, frame: Frame,
+                         rng: np.random.Generator) -> tuple[np.ndarray, float]:
+        """Embedding of one realistic mask and a score penalty for its leaked share."""
+        from .mask_noise import leak_shares
+
+        leaks = leak_shares(piece, true_mask, frame.instance_ids)
+        depth = frame.depth[piece]
+        depth = depth[depth > 0]
+        median = float(np.median(depth)) if len(depth) else self.realism.depth_max
+        vec = self.noise.embed(instance, label, leaks, self.labels, int(piece.sum()), median, rng)
+        return vec, 0.3 * sum(leaks.values())
 
     def segment_with_log(self, frame: Frame) -> tuple[Segmentation, FaultLog]:
         """Masks (K, H, W), embeddings (K, D), scores (K,) for frame.instance_ids, plus the fault log."""
@@ -111,13 +134,19 @@ class SyntheticSegmenter:
                 groups[a] += groups.pop(b)
                 log.merged += 1
         masks, vecs, scores = [], [], []
+        realistic = self.noise is not None
+        if realistic:
+            from .mask_noise import weakness
+
+            weak = weakness(frame.rgb, frame.depth, self.realism.boundary_wander_px)
         for key in sorted(groups):
             if rng.random() < cfg.miss_rate:
                 log.missed += 1
                 continue
             members = groups[key]
             mask = np.isin(inst, members)
-            label = self.labels[max(members, key=lambda m: area_of[m])]
+            main = max(members, key=lambda m: area_of[m])
+            label = self.labels[main]
             faults = len(members) - 1
             if rng.random() < cfg.erode_rate:
                 kernel = np.ones((2 * cfg.erode_px + 1,) * 2, np.uint8)
@@ -125,6 +154,13 @@ class SyntheticSegmenter:
                 if eroded.sum() >= cfg.min_area_px:
                     mask, faults = eroded, faults + 1
                     log.eroded += 1
+            true_mask = np.isin(inst, members)
+            if realistic:
+                from .mask_noise import wander
+
+                moved = wander(mask, weak, self.realism.boundary_wander_px, rng)
+                if moved.sum() >= cfg.min_area_px:
+                    mask = moved
             pieces = [mask]
             if rng.random() < cfg.split_rate and mask.sum() >= 2 * cfg.min_area_px:
                 pieces = _split(mask)
@@ -132,8 +168,13 @@ class SyntheticSegmenter:
                 log.split += 1
             for piece in pieces:
                 masks.append(piece)
-                vecs.append(self._embed(label, rng, log))
-                scores.append(np.clip(0.95 - 0.15 * faults - rng.uniform(0, 0.1), 0.05, 1.0))
+                penalty = 0.0
+                if realistic:
+                    vec, penalty = self._embed_realistic(main, label, piece, true_mask, frame, rng)
+                    vecs.append(vec)
+                else:
+                    vecs.append(self._embed(label, rng, log))
+                scores.append(np.clip(0.95 - 0.15 * faults - penalty - rng.uniform(0, 0.1), 0.05, 1.0))
         h, w = inst.shape
         dim = len(next(iter(self.vectors.values())))
         seg = Segmentation(np.array(masks, bool).reshape(-1, h, w), np.array(vecs, np.float32).reshape(-1, dim),
