@@ -32,6 +32,8 @@ def register(app: typer.Typer) -> None:
         if cell_size is not None and not cell_size > 0:
             raise IesmError(f"cell size must be > 0, got {cell_size}", None, "--cell-size")
         frames = FrameSet.open(frames_dir)
+        if len(frames) == 0:
+            raise IesmError("the frame set has no frames (n_frames is 0)", frames_dir / "scene.json", "n_frames")
         cfg = MappingConfig() if cell_size is None else MappingConfig(cell_size=cell_size)
         with progress_bar("build-map") as progress:
             task = progress.add_task("build-map", total=len(frames))

@@ -18,12 +18,13 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from ..errors import IesmError
-from ..fileio import atomic_write, read_json_model, write_png, write_text
+from ..fileio import atomic_write, read_json_model, read_npz, write_png, write_text
 
 FORMAT = "iesm-frames"
 VERSION = 1
 DEPTH_SCALE = 1000.0  # depth png units per metre (millimetres)
 MAX_DEPTH_M = 65.535  # largest depth a uint16 millimetre png can hold
+MAX_TRANSLATION_M = 10_000.0  # a camera farther from the origin is a corrupt pose (m)
 
 
 class Intrinsics(BaseModel):
@@ -171,12 +172,10 @@ def write_frame_features(directory: str | Path, features: np.ndarray) -> None:
 # ---------------------------------------------------------------------------------------- reading
 
 
-def _read_npz(path: Path, keys: tuple[str, ...]) -> dict[str, np.ndarray]:
-    try:
-        with np.load(path, allow_pickle=False) as data:
-            return {k: data[k] for k in keys}
-    except (OSError, ValueError, KeyError) as exc:
-        raise IesmError(f"not a readable npz with {', '.join(keys)} ({exc})", path) from None
+def _read_npz(path: Path, keys: tuple[str, ...], kinds: dict[str, str] | str = "biufU",
+              check=None) -> dict[str, np.ndarray]:
+    """`fileio.read_npz`: headers checked before reading, a corrupt archive is one `IesmError`."""
+    return read_npz(path, keys, kinds=kinds, check=check)
 
 
 def _read_png(path: Path, color: bool) -> np.ndarray:
@@ -204,17 +203,26 @@ def _read_pose(path: Path) -> np.ndarray:
                         f"{sorted({len(r) for r in rows})} numbers", path)
     if not np.all(np.isfinite(pose)) or not np.allclose(pose[3], [0, 0, 0, 1], atol=1e-6):
         raise IesmError("pose must be finite with last row 0 0 0 1", path)
+    if np.abs(pose[:3, 3]).max() > MAX_TRANSLATION_M or np.abs(pose[:3, :3]).max() > 1.0 + 1e-3:
+        raise IesmError(f"pose must be a rotation (entries within +-1) and a translation within "
+                        f"+-{MAX_TRANSLATION_M:g} m", path)
     return pose
 
 
 def _read_segmentation(path: Path, hw: tuple[int, int]) -> Segmentation:
-    try:
-        with np.load(path, allow_pickle=False) as data:
-            masks, embeddings, scores = data["masks"], data["embeddings"], data["scores"]
-    except (OSError, ValueError, KeyError) as exc:
-        raise IesmError(f"not a readable segmentation npz with masks, embeddings, scores ({exc})", path) from None
-    if masks.ndim != 3 or masks.shape[1:] != hw:
-        raise IesmError(f"masks have shape {masks.shape}, frame is {hw}", path)
+    def check(name: str, shape: tuple[int, ...], dtype) -> None:  # before the array is read
+        if name == "masks" and (len(shape) != 3 or shape[1:] != hw):
+            raise IesmError(f"masks have shape {shape}, frame is {hw}", path)
+
+    data = _read_npz(path, ("masks", "embeddings", "scores"), check=check,
+                     kinds={"masks": "bu", "embeddings": "f", "scores": "f"})
+    masks, embeddings, scores = data["masks"], data["embeddings"], data["scores"]
+    if not np.all(np.isfinite(embeddings)):
+        raise IesmError("embeddings must be finite (NaN or infinity found)", path)
+    if not np.all((scores >= 0) & (scores <= 1)):  # False for NaN
+        raise IesmError("scores must lie in [0, 1] (NaN or out of range found)", path)
+    if masks.dtype.kind == "u" and masks.size and masks.max() > 1:
+        raise IesmError("masks must be boolean (0 or 1)", path)
     try:
         return Segmentation(masks.astype(bool, copy=False), embeddings.astype(np.float32, copy=False),
                             scores.astype(np.float32, copy=False))

@@ -9,9 +9,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from pydantic import ValidationError
 
 from ..errors import IesmError
-from ..fileio import atomic_write, read_json_model, write_text
+from ..fileio import atomic_write, load_json, read_json_model, read_npy, read_npz, validation_message, write_text
 from ..store.model import GridSpec, InstanceGrid
 
 
@@ -37,28 +38,32 @@ class GroundTruth:
         objects_path = gt / "objects.json"
         if not objects_path.is_file():
             raise IesmError("file is missing", objects_path)
+        data = load_json(objects_path)
         try:
-            data = json.loads(objects_path.read_text(encoding="utf-8"))
             scene_id, objects, rooms_list = str(data["scene_id"]), list(data["objects"]), list(data.get("rooms", []))
-        except (OSError, ValueError, KeyError, TypeError) as exc:
+        except (ValueError, KeyError, TypeError, AttributeError) as exc:
             raise IesmError(f"not a readable object list ({exc})", objects_path) from None
         grid = read_json_model(gt / "grid.json", GridSpec)
         hw = (grid.height, grid.width)
         layers = {}
         for name in ("rooms", "occupancy"):
             path = gt / f"{name}.npy"
+
+            def check(shape: tuple[int, ...], _dtype, path: Path = path) -> None:  # before reading
+                if shape != hw:
+                    raise IesmError(f"shape {shape} differs from grid.json {hw}", path)
+
             try:
-                layers[name] = np.load(path, allow_pickle=False)
-            except (OSError, ValueError) as exc:
-                raise IesmError(f"not a readable .npy ({exc})", path) from None
-            if layers[name].shape != hw:
-                raise IesmError(f"shape {layers[name].shape} differs from grid.json {hw}", path)
+                with path.open("rb") as stream:
+                    layers[name] = read_npy(stream, path, check=check)
+            except OSError as exc:
+                raise IesmError(f"not a readable .npy ({exc.strerror or exc})", path) from None
         cells_path = gt / "cells.npz"
+        z = read_npz(cells_path, ("cells", "indptr", "ids", "top"))
         try:
-            with np.load(cells_path, allow_pickle=False) as z:
-                cells = InstanceGrid(cells=z["cells"], indptr=z["indptr"], ids=z["ids"], top=z["top"])
-        except (OSError, ValueError, KeyError) as exc:
-            raise IesmError(f"not a readable CSR map ({exc})", cells_path) from None
+            cells = InstanceGrid(cells=z["cells"], indptr=z["indptr"], ids=z["ids"], top=z["top"])
+        except ValidationError as exc:
+            raise IesmError(f"not a valid CSR map ({validation_message(exc)[0]})", cells_path) from None
         return cls(scene_id, objects, rooms_list, grid, layers["rooms"].astype(np.int32),
                    layers["occupancy"].astype(bool), cells)  # type: ignore[arg-type]
 

@@ -136,6 +136,10 @@ class InstanceGrid(BaseModel):
 
     @model_validator(mode="after")
     def _check_shapes(self) -> "InstanceGrid":
+        for name in ("cells", "indptr", "ids", "top"):
+            arr = getattr(self, name)
+            if not isinstance(arr, np.ndarray) or arr.ndim != 1 or arr.dtype.kind not in ("f" if name == "top" else "iu"):
+                raise ValueError(f"{name} must be a 1-D {'float' if name == 'top' else 'integer'} array")
         k, nnz = len(self.cells), len(self.ids)
         if len(self.indptr) != k + 1:
             raise ValueError(f"indptr has {len(self.indptr)} entries, expected {k + 1}")
