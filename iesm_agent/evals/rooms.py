@@ -1,7 +1,10 @@
 """Room-map metrics against ground truth (gt/rooms.npy).
 
-Evaluated cells E: cells inside a ground-truth room (gt id >= 0). A predicted map is first
-resampled onto the ground-truth grid (nearest cell centre; outside the predicted grid = no room).
+Evaluated cells E: cells inside a ground-truth room (gt id >= 0) that the per-cell labels cover
+(`evaluated`: every cell some depth pixel of some frame lands in), so the per-cell baseline and
+the segmentations are scored on the same cells and the baseline is not charged for cells it never
+saw. A predicted map is first resampled onto the ground-truth grid (nearest cell centre; outside
+the predicted grid = no room).
 
 Label level (the paper's Table 3), with c over the room types present in E:
   Acc  = |{x in E: pred_label(x) = gt_label(x)}| / |E|
@@ -66,10 +69,11 @@ def overlap_metrics(pred_rooms: np.ndarray, gt_rooms: np.ndarray) -> dict:
 
 
 def score_room_map(pred_rooms: np.ndarray, pred_labels: list[str], gt_rooms: np.ndarray,
-                   gt_labels: dict[int, str]) -> dict:
+                   gt_labels: dict[int, str], evaluated: np.ndarray | None = None) -> dict:
     """All metrics of a (H, W) predicted room-id map with a label per id, against a (H, W) true
-    room-id map with `gt_labels` (id -> type), on the same grid."""
-    inside = gt_rooms >= 0
+    room-id map with `gt_labels` (id -> type), on the same grid; only cells where `evaluated`
+    (H, W) bool is set count (default: every cell in a room). Adds `cells`: cells scored."""
+    inside = (gt_rooms >= 0) if evaluated is None else (gt_rooms >= 0) & evaluated
     names = sorted(set(gt_labels.values()) | set(pred_labels))
     index = {name: i for i, name in enumerate(names)}
     gt_ids = np.array(sorted(gt_labels), np.int64)
@@ -79,7 +83,8 @@ def score_room_map(pred_rooms: np.ndarray, pred_labels: list[str], gt_rooms: np.
     pred_cells = pred_rooms[inside]
     pred_lut = np.array([index[label] for label in pred_labels] + [-1], np.int64)  # id -1 -> last -> none
     pred_class = pred_lut[np.where(pred_cells >= 0, pred_cells, len(pred_labels))]
-    return {**label_metrics(pred_class, gt_class, len(names)), **overlap_metrics(pred_cells, gt_cells)}
+    return {**label_metrics(pred_class, gt_class, len(names)), **overlap_metrics(pred_cells, gt_cells),
+            "cells": int(inside.sum())}
 
 
 def label_components(labels: np.ndarray) -> np.ndarray:
@@ -118,17 +123,22 @@ def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:
     pred_labels = [room.label for room in sorted(rooms_scene.rooms, key=lambda r: r.id)]
     pred = _dense_ids(pred, [room.id for room in sorted(rooms_scene.rooms, key=lambda r: r.id)])
     baseline = CellLabels(resample(cell_labels.labels, scene.grid, gt.grid), cell_labels.names)
-    return {"rooms": score_room_map(pred, pred_labels, gt.rooms, labels),
-            "rooms_baseline": baseline_scores(baseline, gt.rooms, labels)}
+    evaluated = baseline.labels >= 0
+    return {"rooms": score_room_map(pred, pred_labels, gt.rooms, labels, evaluated),
+            "rooms_baseline": baseline_scores(baseline, gt.rooms, labels, evaluated)}
 
 
-def baseline_scores(cell_labels, gt_rooms: np.ndarray, gt_labels: dict[int, str]) -> dict:
-    """Metrics of the per-cell labels alone (rooms = components of equal label)."""
+def baseline_scores(cell_labels, gt_rooms: np.ndarray, gt_labels: dict[int, str],
+                    evaluated: np.ndarray | None = None) -> dict:
+    """Metrics of the per-cell labels alone (rooms = components of equal label), on the cells
+    `evaluated` (default: the labelled ones)."""
     components = label_components(cell_labels.labels)
     comp_label = np.full(int(components.max(initial=-1)) + 1, -1, np.int64)
     inside = components >= 0
     comp_label[components[inside]] = cell_labels.labels[inside]
-    return score_room_map(components, [cell_labels.names[i] for i in comp_label.tolist()], gt_rooms, gt_labels)
+    evaluated = cell_labels.labels >= 0 if evaluated is None else evaluated
+    return score_room_map(components, [cell_labels.names[i] for i in comp_label.tolist()], gt_rooms, gt_labels,
+                          evaluated)
 
 
 def _dense_ids(room_map: np.ndarray, ids: list[int]) -> np.ndarray:

@@ -1,12 +1,13 @@
 """Simulated per-cell room labels that behave like the paper's per-pixel CLIP baseline.
 
-For every frame, each depth pixel (subsampled) is back-projected to the world and voted into the
-grid cell it lands in. Its label is the type of the room the point lies in with probability
-`p_content`, else the type of the room the camera stands in (viewpoint dependence: looking through
-a door or across an open-plan space labels the next room after the camera's); per frame, with
-probability `p_confuse`, the camera's room type is replaced by a similar type (lexicon "related"
-pairs, else any other type in the scene); `p_noise` of the pixels get a random type. Cells take the
-majority over all votes. Everything is seeded. Reads the ground truth, so only for the simulator.
+For every frame, each depth pixel (every one by default: `stride` 1) is back-projected to the world
+and voted into the grid cell it lands in. Errors are correlated with the viewpoint, as a CLIP-like
+feature of a whole view is: per frame, with probability `p_confuse` the camera's room is read as a
+similar type (lexicon "related" pairs, else any other type in the scene) for every pixel in it;
+and each other room the view sees (through a door, across an open-plan space) is recognised as its
+own type with probability `p_content`, else all its pixels take the camera's room label. `p_noise`
+of the pixels get a random type. Cells take the majority over all votes. Everything is seeded.
+Reads the ground truth, so only for the simulator.
 """
 
 from __future__ import annotations
@@ -49,7 +50,7 @@ def _similar_types(names: list[str]) -> list[np.ndarray]:
 class ViewpointLabels:
     """`CellLabelSource` over a simulator frame directory (needs DIR/gt)."""
 
-    def __init__(self, frames_dir: str | Path, *, seed: int = 0, stride: int = 4, p_content: float = 0.7,
+    def __init__(self, frames_dir: str | Path, *, seed: int = 0, stride: int = 1, p_content: float = 0.7,
                  p_confuse: float = 0.2, p_noise: float = 0.1, max_height: float = 2.0):
         self.frames = FrameSet.open(frames_dir)
         self.gt = GroundTruth.load(frames_dir)
@@ -80,11 +81,15 @@ class ViewpointLabels:
             camera_type = room_type[gt_rooms[camera_cell]] if camera_cell >= 0 else -1
             if camera_type < 0 or len(points) == 0:
                 continue
-            if rng.random() < self.p_confuse:
-                camera_type = int(rng.choice(similar[camera_type]))
+            camera_room = gt_rooms[camera_cell]
+            read_as = int(rng.choice(similar[camera_type])) if rng.random() < self.p_confuse else camera_type
             gt_cell = _cells(points[:, :2], self.gt.grid)
-            content = np.where(gt_cell >= 0, room_type[gt_rooms[np.maximum(gt_cell, 0)]], -1)
-            label = np.where((content >= 0) & (rng.random(len(points)) < self.p_content), content, camera_type)
+            point_room = np.where(gt_cell >= 0, gt_rooms[np.maximum(gt_cell, 0)], -1)
+            # per room seen in this view: recognised as itself, or read as the camera's room
+            rooms_seen = np.unique(point_room[(point_room >= 0) & (point_room != camera_room)])
+            recognised = rooms_seen[rng.random(len(rooms_seen)) < self.p_content]
+            content = np.where(point_room >= 0, room_type[np.maximum(point_room, 0)], -1)
+            label = np.where(np.isin(point_room, recognised) & (content >= 0), content, read_as)
             noisy = rng.random(len(points)) < self.p_noise
             label[noisy] = rng.integers(0, n_labels, int(noisy.sum()))
             cell = _cells(points[:, :2], grid)

@@ -1,12 +1,30 @@
-"""Studies: one command per results table, each writing OUT/table.md and OUT/summary.json.
+"""Studies: one command per results table, each writing OUT/table.md (the table with the exact
+command, profile and seeds) and OUT/summary.json (per-seed rows and means) under docs/results/.
 
-    python -m iesm_agent.evals.studies.mapping --seeds 0-4 --out evals/mapping
-    python -m iesm_agent.evals.studies.rooms --seeds 0-4 --out evals/rooms
+    python -m iesm_agent.evals.studies.mapping --seeds 10-14 --realism realistic --out docs/results/mapping-realistic
+    python -m iesm_agent.evals.studies.rooms --seeds 10-14 --realism realistic --out docs/results/rooms-realistic
+    python -m iesm_agent.evals.studies.captions --seeds 10-14 --realism realistic --out docs/results/captions-realistic
+    python -m iesm_agent.evals.studies.calibration --seeds 10-14 --realism realistic --out docs/results/calibration-realistic
+    python -m iesm_agent.evals.studies.retrieval --seeds 10-12 --realism realistic --out docs/results/retrieval-realistic
+    python -m iesm_agent.evals.studies.storage --seeds 10 --out docs/results/storage
+
+Seeds 0-4 are tuning seeds (the mapping thresholds, the room split and the realism profile were
+set on them); reported tables use seeds 10 and up (`check_seeds`).
 """
 
 from __future__ import annotations
 
+import argparse
+import contextlib
+import json
+import tempfile
+from pathlib import Path
+from typing import Iterator, Optional
+
 from ...errors import IesmError
+
+#: seeds the thresholds and the realism profile were tuned on; never in a reported table
+TUNING_SEEDS = frozenset(range(0, 5))
 
 
 def parse_seeds(text: str) -> list[int]:
@@ -19,3 +37,75 @@ def parse_seeds(text: str) -> list[int]:
     except ValueError:
         raise IesmError(f"expected seeds like 0-4 or 0,2,5, got {text!r}", None, "--seeds") from None
     return seeds
+
+
+def check_seeds(seeds: list[int], allow_tuning: bool) -> None:
+    """Refuse tuning seeds in a reported table unless `allow_tuning` (--allow-tuning-seeds)."""
+    bad = sorted(set(seeds) & TUNING_SEEDS)
+    if bad and not allow_tuning:
+        raise IesmError(f"seeds {bad} were used for tuning; report other seeds (or pass --allow-tuning-seeds)",
+                        None, "--seeds")
+
+
+def profile_arg(text: str) -> str:
+    """argparse type of --realism."""
+    from ...sim.realism import PROFILES
+
+    if text not in PROFILES:
+        raise argparse.ArgumentTypeError(f"choose from {', '.join(PROFILES)}")
+    return text
+
+
+class SceneCache:
+    """Rendered scenes under `root`, one directory per (size, open plan, realism, seed), made once."""
+
+    def __init__(self, root: Path):
+        self.root = root
+
+    def prepare(self, seed: int, size: str, open_plan: bool, realism: str, space: Optional[str] = None) -> Path:
+        from ...sim import generate_scene, render_frames
+
+        frames = self.root / f"{size}-{'open' if open_plan else 'walled'}-{realism}-{seed}"
+        if not (frames / "gt" / "sim.json").is_file():
+            render_frames(generate_scene(seed, size, open_plan), frames, space=space, realism=realism)
+        return frames
+
+    def built(self, frames: Path) -> Path:
+        """The map `iesm build-map` makes of `frames` (cached beside it)."""
+        from ...frames import FrameSet
+        from ...mapping.build import build_map
+        from ...store import save_map
+
+        path = frames.with_suffix(".iesm")
+        if not path.is_file():
+            save_map(build_map(FrameSet.open(frames)), path)
+        return path
+
+
+@contextlib.contextmanager
+def scene_frames(work: Optional[Path]) -> Iterator[SceneCache]:
+    """A `SceneCache` in `work` (kept) or in a temporary directory (removed afterwards)."""
+    if work is not None:
+        work.mkdir(parents=True, exist_ok=True)
+        yield SceneCache(work)
+        return
+    with tempfile.TemporaryDirectory() as tmp:
+        yield SceneCache(Path(tmp))
+
+
+def write_table(out: Path, title: str, command: str, body: str, summary: dict) -> None:
+    """OUT/table.md (title, command, body) and OUT/summary.json (`summary` + the command)."""
+    from ...fileio import write_text
+
+    out.mkdir(parents=True, exist_ok=True)
+    write_text(out / "summary.json", json.dumps({"command": command, **summary}, indent=1) + "\n")
+    write_text(out / "table.md", f"# {title}\n\nCommand: `{command}`\n\n{body.rstrip()}\n")
+
+
+def common_args(parser: argparse.ArgumentParser, default_seeds: str, default_out: str) -> None:
+    """--seeds, --realism, --out, --work, --allow-tuning-seeds."""
+    parser.add_argument("--seeds", default=default_seeds)
+    parser.add_argument("--realism", type=profile_arg, default="realistic")
+    parser.add_argument("--out", type=Path, default=Path(default_out))
+    parser.add_argument("--work", type=Path, default=None, help="keep (and reuse) rendered scenes and maps here")
+    parser.add_argument("--allow-tuning-seeds", action="store_true", help="for tuning runs; never for reported tables")

@@ -1,18 +1,17 @@
-"""The five-scene mapping study (paper Tables 1-3 on simulated scenes), one command:
+"""The mapping study (paper Tables 1-3 on simulated scenes), one command per profile:
 
-    python -m iesm_agent.evals.studies.mapping --seeds 0-4 --out evals/mapping
+    python -m iesm_agent.evals.studies.mapping --seeds 10-14 --realism realistic --out docs/results/mapping-realistic
 
-For each seed: generate a scene and render its frames (iesm_agent.sim), build our 2.5D map with
-and without the second pass and the VLMaps-style 2D point-wise map from the same frames and
-masks, score all three against the ground truth, and write OUT/table.md + OUT/summary.json.
+For each seed: generate a scene and render its frames (iesm_agent.sim, the given realism profile),
+build our 2.5D map with and without the second pass and the VLMaps-style 2D point-wise map from
+the same frames and masks, score all three against both ground truths (observed footprint, full
+object footprint; evals/mapping.py), and write OUT/table.md + OUT/summary.json.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import sys
-import tempfile
 import time
 from pathlib import Path
 from typing import Optional
@@ -20,11 +19,10 @@ from typing import Optional
 import numpy as np
 
 from ...config import MappingConfig
-from ...fileio import write_text
 from ...frames import FrameSet
 from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
-from . import parse_seeds
+from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
 from ..baseline2d import PointwiseMap2D
 from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
 
@@ -32,8 +30,12 @@ METHODS = ("ours", "ours_no_second_pass", "pointwise_2d")
 TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass", "pointwise_2d": "2D point-wise + GT mask"}
 
 
+FOOTPRINTS = {"observed": "observed footprint", "full": "full object footprint"}
+
+
 def study_scene(frames_dir: Path, cfg: MappingConfig) -> dict:
-    """Metrics of the three methods on one frame directory (with gt/)."""
+    """Metrics of the three methods on one frame directory (with gt/), per ground truth:
+    {"observed": {method: score}, "full": {...}, "scene": {...}}."""
     frames = FrameSet.open(frames_dir)
     cfg = cfg.model_copy(update={"cell_size": frames.meta.cell_size})
     categories, e = category_vectors(frames)
@@ -46,13 +48,17 @@ def study_scene(frames_dir: Path, cfg: MappingConfig) -> dict:
     maps = {"ours": builder.finish(categories, e, second_pass=True, **kw),
             "ours_no_second_pass": builder.finish(categories, e, second_pass=False, **kw)}
     build_s = time.perf_counter() - t0
-    ctx = EvalContext.create(GroundTruth.load(frames_dir), frames_dir, cfg)
-    out = {name: score(prediction_from_map(scene, ctx), ctx) for name, scene in maps.items()}
     keys, scores = flat2d.finish()
-    out["pointwise_2d"] = score(prediction_from_pointwise(keys, scores, cfg.cell_size, ctx), ctx)
+    gt = GroundTruth.load(frames_dir)
+    out: dict = {}
+    for footprint in FOOTPRINTS:
+        ctx = EvalContext.create(gt, frames_dir, cfg, footprint)
+        out[footprint] = {name: score(prediction_from_map(scene, ctx), ctx) for name, scene in maps.items()}
+        out[footprint]["pointwise_2d"] = score(prediction_from_pointwise(keys, scores, cfg.cell_size, ctx), ctx)
     out["scene"] = {"scene_id": frames.meta.scene_id, "frames": len(frames), "build_s": round(build_s, 2),
                     "embedding_space": frames.meta.embedding_space, "gt_instances": len(ctx.gt_ids),
-                    "small_categories": sorted(ctx.small_labels), "stacked": len(ctx.stacked)}
+                    "small_categories": sorted(ctx.small_labels), "stacked": len(ctx.stacked),
+                    "single_view": {name: sum(len(i.frames) <= 1 for i in scene.instances) for name, scene in maps.items()}}
     return out
 
 
@@ -87,66 +93,73 @@ GROUPS = {"all": "Instances (Table 1)", "topdown": "Top-down label map (Table 2)
 
 
 def summarise(per_scene: dict[str, dict]) -> dict:
-    """Mean of every column over the scenes, per method (None where a method has no value)."""
+    """Mean of every column over the scenes, per ground truth and method (None where a method
+    has no value)."""
     results = list(per_scene.values())
-    return {m: {f"{g}.{h}": (_mean([r[m] for r in results], path) if shown or m != "pointwise_2d" else None)
-                for g, h, path, shown in COLUMNS} for m in METHODS}
+    return {fp: {m: {f"{g}.{h}": (_mean([r[fp][m] for r in results], path) if shown or m != "pointwise_2d" else None)
+                     for g, h, path, shown in COLUMNS} for m in METHODS} for fp in FOOTPRINTS}
 
 
-def table_markdown(mean: dict, per_scene: dict[str, dict]) -> str:
+def table_markdown(mean: dict, per_scene: dict[str, dict], realism: str, seeds_arg: str) -> str:
     gt = np.mean([r["scene"]["gt_instances"] for r in per_scene.values()])
-    lines = [f"Mean over {len(per_scene)} simulated scenes ({', '.join(per_scene)}; {gt:.1f} ground-truth instances "
-             "seen per scene). Higher is better except Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
-             "construction (as in the paper's Table 1).", ""]
-    for group, title in GROUPS.items():
-        cols = [(h, f"{g}.{h}") for g, h, _p, _s in COLUMNS if g == group]
-        lines += [f"### {title}", "", "| method | " + " | ".join(h for h, _ in cols) + " |",
-                  "|---|" + "---:|" * len(cols)]
-        for m in METHODS:
-            cells = [("-" if mean[m][k] is None else (f"{mean[m][k]:.1f}" if h in INTEGER_COLUMNS else f"{mean[m][k]:.3f}"))
-                     for h, k in cols]
-            lines.append(f"| {TITLES[m]} | " + " | ".join(cells) + " |")
-        lines.append("")
+    small = sorted({c for r in per_scene.values() for c in r["scene"]["small_categories"]})
+    single = np.mean([r["scene"]["single_view"]["ours"] for r in per_scene.values()])
+    lines = [f"Profile `{realism}`; seeds {seeds_arg} (not used for tuning); mean over {len(per_scene)} simulated "
+             f"scenes ({', '.join(per_scene)}; {gt:.1f} ground-truth instances seen per scene). Higher is better "
+             "except Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
+             "construction (as in the paper's Table 1).", "",
+             f"Small categories (per dataset, bottom 20 % of footprints over the tuning worlds): {', '.join(small)}.", "",
+             f"Instances of our map seen in one frame only: {single:.1f} per scene.", ""]
+    for fp, fp_title in FOOTPRINTS.items():
+        lines += [f"## Ground truth: {fp_title}", ""]
+        for group, title in GROUPS.items():
+            cols = [(h, f"{g}.{h}") for g, h, _p, _s in COLUMNS if g == group]
+            lines += [f"### {title}", "", "| method | " + " | ".join(h for h, _ in cols) + " |",
+                      "|---|" + "---:|" * len(cols)]
+            for m in METHODS:
+                v = mean[fp][m]
+                cells = [("-" if v[k] is None else (f"{v[k]:.1f}" if h in INTEGER_COLUMNS else f"{v[k]:.3f}"))
+                         for h, k in cols]
+                lines.append(f"| {TITLES[m]} | " + " | ".join(cells) + " |")
+            lines.append("")
     return "\n".join(lines)
 
 
-def run_study(seeds: list[int], out: Path, *, size: str = "small", frames_root: Optional[Path] = None,
-              space: Optional[str] = None, log=print) -> dict:
-    """Render (or reuse, under `frames_root`) each seed's frames, study them, write table.md and summary.json."""
-    from ...sim import generate_scene, render_frames
-
-    out.mkdir(parents=True, exist_ok=True)
+def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_arg: Optional[str] = None,
+              size: str = "small", work: Optional[Path] = None, space: Optional[str] = None, log=print) -> dict:
+    """Render (or reuse, under `work`) each seed's frames, study them, write table.md and summary.json."""
+    seeds_arg = seeds_arg or ",".join(map(str, seeds))
     cfg = MappingConfig()
     per_scene: dict[str, dict] = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        root = frames_root or Path(tmp)
+    with scene_frames(work) as cache:
         for seed in seeds:
-            frames_dir = root / f"{size}-{seed}"
-            if not (frames_dir / "gt" / "cells.npz").is_file():
-                render_frames(generate_scene(seed, size), frames_dir, space=space)
+            frames_dir = cache.prepare(seed, size, False, realism, space)
             result = study_scene(frames_dir, cfg)
             per_scene[result["scene"]["scene_id"]] = result
-            o = result["ours"]
-            log(f"{result['scene']['scene_id']}: AUC match {o['auc_top']['match']:.3f}, Inst. Diff "
-                f"{o['instance_diff']} (w/o 2nd pass {result['ours_no_second_pass']['instance_diff']})")
+            o = result["observed"]
+            log(f"{realism} {result['scene']['scene_id']}: AUC match {o['ours']['auc_top']['match']:.3f}, top-1 "
+                f"{o['ours']['auc_top']['top1_match']:.3f}, Inst. Diff {o['ours']['instance_diff']} of "
+                f"{o['ours']['n_gt']} (w/o 2nd pass {o['ours_no_second_pass']['instance_diff']})")
     mean = summarise(per_scene)
-    summary = {"seeds": seeds, "size": size, "config": cfg.model_dump(), "mean": mean, "scenes": per_scene}
-    write_text(out / "summary.json", json.dumps(summary, indent=1) + "\n")
-    write_text(out / "table.md", "# Mapping study\n\nCommand: `python -m iesm_agent.evals.studies.mapping --seeds "
-           f"{','.join(map(str, seeds))} --out {out}`\n\n" + table_markdown(mean, per_scene))
+    command = (f"python -m iesm_agent.evals.studies.mapping --seeds {seeds_arg} --realism {realism} "
+               f"--size {size} --out {out.as_posix()}")
+    summary = {"seeds": seeds, "realism": realism, "size": size, "config": cfg.model_dump(), "mean": mean,
+               "scenes": per_scene}
+    write_table(out, f"Mapping study ({realism} profile)", command,
+                table_markdown(mean, per_scene, realism, seeds_arg), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.mapping", description=__doc__.splitlines()[0])
-    parser.add_argument("--seeds", default="0-4")
-    parser.add_argument("--out", type=Path, default=Path("evals/mapping"))
+    common_args(parser, "10-14", "docs/results/mapping-realistic")
     parser.add_argument("--size", default="small", choices=["small", "hm3d"])
-    parser.add_argument("--frames", type=Path, default=None, help="keep (and reuse) the rendered frames here")
     parser.add_argument("--space", default=None, help="embedding space (default: the best available)")
     args = parser.parse_args(argv)
-    run_study(parse_seeds(args.seeds), args.out, size=args.size, frames_root=args.frames, space=args.space,
-              log=lambda line: print(line, file=sys.stderr))
+    seeds = parse_seeds(args.seeds)
+    check_seeds(seeds, args.allow_tuning_seeds)
+    run_study(seeds, args.out, realism=args.realism, seeds_arg=args.seeds, size=args.size, work=args.work,
+              space=args.space, log=lambda line: print(line, file=sys.stderr, flush=True))
     print((args.out / "table.md").read_text())
     return 0
 
