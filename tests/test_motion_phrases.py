@@ -93,3 +93,31 @@ def test_misspellings_are_read_as_the_word_they_miss():
         assert label in analyse_query(query).targets, query
     assert analyse_query("a bit of light").targets.keys() == analyse_query("a bit of light").targets.keys()
     assert load_lexicon().correct("bit") == "bit"     # an English word is never corrected
+
+
+# -- more grammar classes of the shared query reading (wordings written for these tests) ---------
+def test_a_preamble_says_why_not_what():
+    info = analyse_query("My feet are cold, could you take me to a rug")
+    assert set(info.targets) == {"rug"}
+    info = analyse_query("I'd love a hot drink - go to whatever boils water")
+    assert "cup" not in info.targets and max(info.afford, key=info.afford.get) == "kettle"
+
+
+def test_the_request_sentence_is_the_one_naming_a_kind():
+    info = analyse_query("Where do the clean towels go? The cupboard in the bathroom.")
+    assert info.named and "bathroom" in info.rooms
+    info = analyse_query("Take me to the bedroom armchair. The fabric one, not the leather one.")
+    assert ("material", "fabric") in info.attrs and ("material", "leather") in info.excluded_attrs
+    assert analyse_query("Which mirror hangs in the hallway? Go there.").named
+
+
+def test_landmark_attributes_stay_with_the_landmark():
+    assert analyse_query("the plant by the tall bookshelf").attrs == []
+    assert ("size", "tall") in analyse_query("the tall plant by the bookshelf").attrs
+    assert ("color", "red") in analyse_query("the book with the red cover").attrs
+    assert {("material", "wood"), ("material", "glass")} <= set(analyse_query("the wood and glass cabinet").attrs)
+
+
+def test_gerunds_after_a_preposition_are_functions_participles_after_a_noun_are_verbs():
+    assert analyse_query("something meant for sleeping in the bedroom").afford
+    assert parse_query("the cup resting on the shelf").target[0] == "cup"

@@ -23,6 +23,7 @@ from ..fileio import load_json, validation_message
 from ..providers.base import Model
 from ..retrieval.methods import is_method_name
 from .journal import ResultRecord, append_record, read_journal, repair_journal
+from .prompt_log import PromptRecorder, journaled_calls, template_hashes
 from .report import build_summary, write_outputs
 from .suite import MapRegistry, Suite, SuiteEntry, load_suites
 
@@ -52,6 +53,8 @@ class RunConfig(BaseModel):
     experts_dirs: list[str] = []
     #: ground truth for N-SR: "DIR" (the suite's one map with starts) or "MAP=DIR"
     gt: list[str] = []
+    #: variant -> template name -> sha256 (12 hex) of its source: the prompts by content, not path
+    prompt_hashes: dict[str, dict[str, str]] = {}
 
 
 def split_methods(specs: list[str]) -> list[str]:
@@ -96,7 +99,8 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
             raise IesmError(f"cannot read suite: {exc}", path) from exc
     return RunConfig(suites=[str(p) for p in paths], suites_sha256=digest.hexdigest(), variants=variants,
                      provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
-                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs], gt=[_resolve_gt(g) for g in gt])
+                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs], gt=[_resolve_gt(g) for g in gt],
+                     prompt_hashes={v.name: template_hashes(v.prompts_dir) for v in variants})
 
 
 def _resolve_gt(spec: str) -> str:
@@ -190,14 +194,13 @@ def _build_model(config: RunConfig) -> Model:
 
 
 async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = False, concurrency: int = 4,
-                   model: Model | None = None,
+                   model: Model | None = None, keep_prompts: bool = False,
                    on_start: Callable[[int], None] | None = None,
                    on_result: Callable[[ResultRecord], None] | None = None) -> RunOutcome:
     """Run (or resume) the evaluation described by `config` into `run_dir`. `model` overrides
     the provider named in the config (tests); `on_start(n_pending)` and `on_result` drive a
-    progress display. The response cache (if on) lives in `$IESM_CACHE_DIR` or the user cache."""
-    from ..sim.ground_truth import GroundTruth
-    from .navigation import NavTrials
+    progress display. The response cache (if on) lives in `$IESM_CACHE_DIR` or the user cache.
+    `keep_prompts` journals every call's rendered prompt and raw reply (for the HTML report)."""
     from ..retrieval import Retriever
     from ..store.mapstore import MapStore
 
@@ -208,6 +211,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     suite = load_suites(config.suites, skip_invalid=config.skip_invalid, registry=registry)
     check_variants(config)  # before the run directory is made: a typo leaves nothing behind
     model = model or _build_model(config)
+    recorder = PromptRecorder(model) if keep_prompts else None
+    model = recorder or model
     try:
         prepare_run_dir(run_dir, config, resume)
     except BaseException:
@@ -226,8 +231,13 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
     stores = {path: MapStore(registry.get(path)) for path in {e.map_path for e, _ in jobs}}
     with_starts = {e.map_path for e in suite.entries if e.query.start is not None}
-    navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory))
-            for path, directory in nav_ground_truth(config.gt, with_starts).items() if path in stores}
+    navs = {}
+    if config.gt:  # the simulator's ground truth is read only when N-SR is asked for
+        from ..sim.ground_truth import GroundTruth
+        from .navigation import NavTrials
+
+        navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory))
+                for path, directory in nav_ground_truth(config.gt, with_starts).items() if path in stores}
     retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
                                             experts_dirs=config.experts_dirs, cache=False)
                   for path, store in stores.items() for v in config.variants}
@@ -239,7 +249,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
         async def worker() -> None:
             for entry, variant in pending:
-                record = await _ask(retrievers[entry.map_path, variant.name], entry, variant, navs.get(entry.map_path))
+                record = await _ask(retrievers[entry.map_path, variant.name], entry, variant, navs.get(entry.map_path),
+                                    recorder)
                 append_record(handle, record)
                 new.append(record)
                 if on_result:
@@ -257,10 +268,12 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
                       wall_s=time.perf_counter() - started)
 
 
-async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> ResultRecord:
+async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None,
+               recorder: PromptRecorder | None = None) -> ResultRecord:
     """One retrieval as a record; rank and ranking cover the ids the method scored (the rest of
     the candidate set follows in arbitrary candidate order and would inflate MRR). With `nav`
-    (NavTrials) and a start, the simulated robot then goes to the retrieved instance (N-SR)."""
+    (NavTrials) and a start, the simulated robot then goes to the retrieved instance (N-SR).
+    The record keeps the evidence the HTML report shows (gate, experts, U/S/P, calls)."""
     from .navigation import record_fields
 
     q = entry.query
@@ -271,7 +284,23 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None) -> Resu
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
         rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
         tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
-        candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id))
+        candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id),
+        accept=q.accept, start=q.start, nav_path=_planned_path(nav, q.start, res.instance_id),
+        gate=res.gate, hints=res.hints, experts=res.experts, abstained=res.abstained,
+        scores={i: res.scores[i] for i in scored[:10]}, sum_scores={i: res.sum_scores.get(i, 0.0) for i in scored[:10]},
+        peak_scores={i: res.peak_scores.get(i, 0.0) for i in scored[:10]}, lam=res.lam, kappa=res.kappa,
+        deciding_expert=res.deciding_expert, notes=res.notes, names=res.names,
+        calls=journaled_calls(res.calls, recorder))
+
+
+def _planned_path(nav, start, predicted) -> list[tuple[float, float]]:
+    """The path planned from `start` to the prediction (m, at most 200 points) when N-SR is measured."""
+    if nav is None or start is None or predicted is None:
+        return []
+    waypoints = nav.planner.plan(predicted, start).waypoints
+    if len(waypoints) > 200:
+        waypoints = waypoints[:: len(waypoints) // 200 + 1] + waypoints[-1:]
+    return [(round(x, 3), round(y, 3)) for x, y in waypoints]
 
 
 def _shown(path: str) -> str:

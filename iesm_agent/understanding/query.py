@@ -3,11 +3,12 @@ with the shipped lexicon. Every provider and the candidate selection rely on thi
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
-from .motion import strip_motion
+from .motion import MOTION_VERBS, strip_motion
 from .text import Slot, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
@@ -71,6 +72,87 @@ _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
 
 
+#: question words that act as determiners before a noun ("which lamp is ...", "what chair ...")
+_QUESTION_DETERMINERS = frozenset({"which", "what", "whichever"})
+_PRONOUNS = frozenset({"i", "you", "we", "they", "he", "she", "it", "i'd", "i'm", "you'd", "one", "is", "are", "do",
+                       "does", "can"})
+
+
+_CONJUNCTIONS = frozenset({"and", "or", "nor", "plus"})
+#: words that introduce a part or feature of the target ("with the red cover")
+_PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
+
+
+def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], end: int) -> bool:
+    """An attribute outside the target phrase directly before another noun describes that noun,
+    not the target: a landmark ("by the big sofa") or a noun the lexicon does not know ("put the
+    dirty washing")."""
+    nxt = span.end
+    if span.start < end or nxt >= len(lemmas):
+        return False
+    governor = next((lemmas[i] for i in range(span.start - 1, -1, -1) if lemmas[i] in lex.words["boundaries"]), None)
+    if governor is None or governor in _PART_WORDS or governor in _CONJUNCTIONS:
+        return False  # "the novel with the red cover", "the wood and glass cabinet": the target's
+    if nxt in covered:  # "by the big sofa": the landmark's size
+        return any(sp.start == 0 and sp.has("cat") for sp in lex.scan(lemmas[nxt:nxt + lex.max_len]))
+    word = lemmas[nxt]
+    stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
+    return word.isalpha() and len(word) > 2 and word not in stop
+
+
+_SENTENCE_END = re.compile(r"[.?!;]+(?:\s+|$)")
+#: words that add nothing to a sentence's content ("Head there.", "Thanks!")
+_DEICTIC = frozenset({"there", "here", "it", "now", "thanks", "thank", "you", "please", "go", "ok", "okay"})
+
+
+def _request_sentence(lex: Lexicon, text: str) -> tuple[str, str]:
+    """(request, context) of a query of several sentences: the request is the last sentence that
+    names a kind of object ("Where do I put the washing? The machine in the bathroom.") with the
+    sentences after it ("The leather one."); the sentences before it are context; sentences
+    without content ("Head there.") drop out. One sentence, or none naming a kind: (text, "")."""
+    parts = [p for p in _SENTENCE_END.split(text) if p.strip()]
+    if len(parts) < 2:
+        return text, ""
+    content = []
+    for part in parts:
+        words = [t for t in strip_motion(_strip_command(lex, lex.tokens(part)))
+                 if t not in _DEICTIC and t not in lex.words["skip"]]
+        if words:
+            content.append(part)
+    naming = [p for p in content
+              if any(sp.has("cat") or sp.has("gen") for sp in lex.scan(lemmatise(lex, lex.spell(lex.tokens(p)))))]
+    if not naming:
+        return (" ".join(content) if content else text), ""
+    at = content.index(naming[-1])  # what follows qualifies it ("The leather one."), what comes before says why
+    return " ".join(content[at:]), " ".join(content[:at])
+
+
+#: words that open the request proper after a preamble ("I'm thirsty, go to the ...")
+_REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
+#: share of the request's function evidence a preamble's function evidence gets
+_PREAMBLE_SCALE = 0.5
+
+
+def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[str]]:
+    """(request, preamble): when a request phrase ("go to", "take me to", "find") starts after at
+    least two words, what comes before it only says why ("My back hurts, take me to a cushion")."""
+    for i in range(2, len(tokens) - 1):
+        if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
+            continue  # "to get it cleaned" is a purpose, not the request
+        for cmd in lex.commands:
+            if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd):
+                return tokens[i:], tokens[:i]
+    return tokens, []
+
+
+def _drop_question_word(tokens: list[str]) -> list[str]:
+    """A leading "which"/"what" before a noun is a determiner ("which lamp is on the desk"): dropped,
+    so the noun starts the target phrase; before a pronoun or verb ("what I use to ...") it stays."""
+    if len(tokens) > 1 and tokens[0] in _QUESTION_DETERMINERS and tokens[1] not in _PRONOUNS:
+        return tokens[1:]
+    return tokens
+
+
 def _place_phrase_last(lex: Lexicon, tokens: list[str]) -> list[str]:
     """A leading place phrase moved after the request ("in the bedroom, find the armchair" ->
     "find the armchair in the bedroom"), so the target phrase starts the query as usual."""
@@ -99,13 +181,16 @@ def analyse_query(text: str) -> QueryInfo:
     after an exclusion marker ("- not the leather one") only say what the target is not."""
     lex = load_lexicon()
     skip, bounds = lex.words["skip"], lex.words["boundaries"]
-    tokens = lex.spell(lex.tokens(text))
+    request, context = _request_sentence(lex, text)
+    tokens = lex.spell(lex.tokens(request))
     marker = _exclusion_at(tokens)
     ruled_out = None
     if marker is not None:
         ruled_out = analyse_query(" ".join(tokens[marker[1]:]))
         tokens = tokens[:marker[0]]
-    tokens = _strip_command(lex, strip_motion(_place_phrase_last(lex, tokens)))
+    tokens, preamble = _split_preamble(lex, tokens)
+    preamble = lex.tokens(context) + preamble
+    tokens = _strip_command(lex, _place_phrase_last(lex, _drop_question_word(strip_motion(tokens))))
     surface = [t for t in tokens if t not in skip]
     lemmas = lemmatise(lex, surface)
     spans = lex.scan(lemmas)
@@ -154,6 +239,8 @@ def analyse_query(text: str) -> QueryInfo:
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
+        if attr and not s.has("cue") and _modifies_other_noun(lex, lemmas, s, covered, end):
+            continue  # "where do I put the dirty washing": dirty is the washing, not the target
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
         if attr:
             attr_spans.append(s)
@@ -176,6 +263,14 @@ def analyse_query(text: str) -> QueryInfo:
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)
+    if preamble:  # "I want a cup of tea - go to ...", "It's in the bathroom.": why and where, not what
+        context = analyse_query(" ".join(preamble))
+        scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
+        for concept, weight in context.afford.items():  # never above what the request itself asks
+            afford[concept] = max(afford.get(concept, 0.0), scale * weight)
+        if not info.rooms:
+            info.rooms = dict(context.rooms)
+            info.room_phrase = context.room_phrase
     if afford:
         top = max(afford.values())
         info.afford = {c: w / top for c, w in afford.items()}

@@ -74,6 +74,7 @@ class SpatialQuery:
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
+    named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
 
     @property
     def words(self) -> str:
@@ -97,11 +98,16 @@ def parse_query(text: str) -> SpatialQuery:
     used: set[int] = set()  # starts of cat spans taken as landmarks
 
     def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
+        """Attributes of the noun at `start`, read leftwards over attributes and comparatives
+        ("the grey lower cupboard": grey)."""
         found, end = [], start
-        while end in attr_at:
-            s = attr_at[end]
-            found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
-            end = s.start
+        while end in attr_at or (end > 0 and toks[end - 1] in _EXTREMES):
+            if end in attr_at:
+                s = attr_at[end]
+                found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
+                end = s.start
+            else:
+                end -= 1
         return tuple(found)
 
     def next_cat(pos: int) -> int | None:
@@ -223,8 +229,7 @@ def parse_query(text: str) -> SpatialQuery:
             out.relations[k].negated = True
     target = next((j for j in sorted(cat_at) if j not in used), None)
     info = analyse_query(text)
-    if target is None and not info.afford and not info.unknown_target \
-            and not _TARGET_PRONOUNS & set(toks) and out.relations:
+    if target is None and not info.unknown_target and not _TARGET_PRONOUNS & set(toks) and out.relations:
         # a relation needs a target and a distinct landmark: when the only thing named was read as
         # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
         first = next((r for r in out.relations if taken.get(id(r))), None)
@@ -234,6 +239,7 @@ def parse_query(text: str) -> SpatialQuery:
             if not any(taken.get(id(r)) for r in out.relations):
                 out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
     if target is not None:
+        out.named = True
         out.target = tuple(cat_at[target].values("cat"))
         out.attrs = attrs_before(target)
     elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves

@@ -21,13 +21,15 @@ class Slot:
 
 
 def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
-    """Lemmas of a query's tokens; a present participle before a preposition or relative word keeps
-    its form ("the lamp standing on the desk": a verb, so never the category "lamp stand")."""
+    """Lemmas of a query's tokens; a present participle after a noun and before a preposition keeps
+    its form ("the lamp standing on the desk": a verb, so never the category "lamp stand"); a
+    gerund after a preposition is read as its verb ("for sitting in" -> sit)."""
     bounds = lex.words["boundaries"]
     out = []
     for i, token in enumerate(tokens):
         lemma = lex.lemma(token)
-        if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds:
+        if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds \
+                and i > 0 and tokens[i - 1] not in bounds:  # "meant for sitting in ...": a gerund, read as sit
             lemma = token
         out.append(lemma)
     return out

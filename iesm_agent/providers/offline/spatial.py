@@ -75,17 +75,18 @@ def _read_scene(prompt: Prompt) -> _Scene:
 
 def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...]) -> np.ndarray:
     """(N,) bool: instances of one of `cats` (or of a more general kind when none is: "kitchen
-    table" finds a "table"), narrowed to those matching `attrs` when any does."""
+    table" finds a "table"), narrowed to those matching `attrs` best when any matches."""
     lex = load_lexicon()
     fit = np.array([max((w * lex.concept_sim(q, c) for c, w in concepts for q in cats), default=0.0)
                     for concepts in scene.concepts])
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6
     attrs = tuple((k, v) for k, v in attrs if k != "size")  # sizes compare instances: see "extreme"
     if attrs and kind.any():
-        match = kind & np.array([all(any(k == kk and lex.attr_sim(k, v, vv) >= 0.5 for kk, vv in a)
-                                     for k, v in attrs) for a in scene.attrs], bool)
-        if match.any():
-            return match
+        fit = np.array([min(max((lex.attr_sim(k, v, vv) for kk, vv in a if kk == k), default=0.0) for k, v in attrs)
+                        for a in scene.attrs])
+        best = float(fit[kind].max())
+        if best >= 0.5:  # the best-matching colour or material only: "grey" is not "white"
+            return kind & (fit >= best - 1e-9)
     return kind
 
 
@@ -264,7 +265,7 @@ def weigh(prompt: Prompt, reply: dict) -> dict:
         return reply
     sq = parse_query(prompt.query)
     scores, hints = dict(reply.get("scores", {})), dict(reply.get("hints", {}))
-    named = bool(sq.target) and bool(analyse_query(prompt.query).named)
+    named = sq.named
     if sq.relations and named:
         scores = {name: min(int(s), _OTHERS_CAP) for name, s in scores.items()}
     for name in spatial:
