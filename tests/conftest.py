@@ -47,3 +47,18 @@ def model():
     from iesm_agent.providers.offline import OfflineModel
 
     return OfflineModel(use_embeddings=False)
+
+
+def pytest_terminal_summary(terminalreporter):
+    """The fuzz tests' tries per reader and outcome (tests/fuzzing.py), when any ran."""
+    import sys
+
+    fuzzing = sys.modules.get("fuzzing")
+    if fuzzing is None or not fuzzing.Tally.counts:
+        return
+    terminalreporter.section("fuzz cases per reader")
+    for reader, outcomes in sorted(fuzzing.Tally.counts.items()):
+        refused = sum(n for k, n in outcomes.items() if k.endswith("refused"))
+        total = sum(outcomes.values())
+        terminalreporter.write_line(f"{reader}: {total} cases, {refused} refused cleanly, {total - refused} accepted "
+                                    f"as valid; " + ", ".join(f"{k} {n}" for k, n in sorted(outcomes.items())))

@@ -26,7 +26,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ...errors import MapFormatError
 from ...fileio import load_json
-from ..model import MAX_COORD, MAX_ID, GridSpec, Id, Instance, InstanceGrid, Room, SceneMap
+from ..model import MAX_COORD, MAX_GRID_CELLS, MAX_ID, GridSpec, Id, Instance, InstanceGrid, Room, SceneMap
 from . import check_grid_size, field_path, read_json
 
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "<i2", "int16": "<i2",
@@ -205,6 +205,8 @@ def _with_ply(scene_id: str, source: str, instances: list[Instance], rooms: list
     cols, rows, z = v["x"].astype(np.float64), v["y"].astype(np.float64), v["z"].astype(np.float64)
     if not (np.all(np.isfinite(cols)) and np.all(np.isfinite(rows)) and np.all(np.isfinite(z))):
         raise MapFormatError("non-finite vertex coordinates", ply_path, "vertex")
+    if len(v) and max(np.abs(cols).max(), np.abs(rows).max()) > MAX_GRID_CELLS:
+        raise MapFormatError(f"cell index beyond {MAX_GRID_CELLS:,} in x or y", ply_path, "vertex")
     if len(v) and np.abs(z).max() * cell_size > MAX_COORD:
         raise MapFormatError(f"vertex heights beyond {MAX_COORD:g} m", ply_path, "vertex")
     cols, rows = np.rint(cols).astype(np.int64), np.rint(rows).astype(np.int64)
