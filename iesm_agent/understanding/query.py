@@ -37,7 +37,7 @@ class QueryInfo:
     overlap: frozenset[str] = frozenset()                     # stems of extra and attribute words
     unknown_target: str | None = None     # target words the lexicon does not know ("the gizmo")
     unknown_room: str | None = None       # place words after "in" the lexicon does not know
-    #: what the query rules out ("not the leather one", "that isn't a couch"): categories and
+    #: what the query rules out ("not the metal one", "that isn't a stool"): categories and
     #: attributes read from the words after an exclusion marker, which add nothing to the above
     excluded_targets: frozenset[str] = frozenset()
     excluded_attrs: frozenset[tuple[str, str]] = frozenset()
@@ -72,7 +72,7 @@ _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
 
 
-#: question words that act as determiners before a noun ("which lamp is ...", "what chair ...")
+#: question words that act as determiners before a noun ("which vase is ...", "what rug ...")
 _QUESTION_DETERMINERS = frozenset({"which", "what", "whichever"})
 _PRONOUNS = frozenset({"i", "you", "we", "they", "he", "she", "it", "i'd", "i'm", "you'd", "one", "is", "are", "do",
                        "does", "can"})
@@ -85,15 +85,15 @@ _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring"
 
 def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], end: int) -> bool:
     """An attribute outside the target phrase directly before another noun describes that noun,
-    not the target: a landmark ("by the big sofa") or a noun the lexicon does not know ("put the
-    dirty washing")."""
+    not the target: a landmark ("beside the tall wardrobe") or a noun the lexicon does not know
+    ("hang my wet coat")."""
     nxt = span.end
     if span.start < end or nxt >= len(lemmas):
         return False
     governor = next((lemmas[i] for i in range(span.start - 1, -1, -1) if lemmas[i] in lex.words["boundaries"]), None)
     if governor is None or governor in _PART_WORDS or governor in _CONJUNCTIONS:
-        return False  # "the novel with the red cover", "the wood and glass cabinet": the target's
-    if nxt in covered:  # "by the big sofa": the landmark's size
+        return False  # "the mug with the blue handle", "the oak and steel shelf": the target's
+    if nxt in covered:  # "beside the tall wardrobe": the landmark's size
         return any(sp.start == 0 and sp.has("cat") for sp in lex.scan(lemmas[nxt:nxt + lex.max_len]))
     word = lemmas[nxt]
     stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
@@ -107,8 +107,8 @@ _DEICTIC = frozenset({"there", "here", "it", "now", "thanks", "thank", "you", "p
 
 def _request_sentence(lex: Lexicon, text: str) -> tuple[str, str]:
     """(request, context) of a query of several sentences: the request is the last sentence that
-    names a kind of object ("Where do I put the washing? The machine in the bathroom.") with the
-    sentences after it ("The leather one."); the sentences before it are context; sentences
+    names a kind of object ("Where do spare blankets go? The chest in the bedroom.") with the
+    sentences after it ("The oak one."); the sentences before it are context; sentences
     without content ("Head there.") drop out. One sentence, or none naming a kind: (text, "")."""
     parts = [p for p in _SENTENCE_END.split(text) if p.strip()]
     if len(parts) < 2:
@@ -123,11 +123,11 @@ def _request_sentence(lex: Lexicon, text: str) -> tuple[str, str]:
               if any(sp.has("cat") or sp.has("gen") for sp in lex.scan(lemmatise(lex, lex.spell(lex.tokens(p)))))]
     if not naming:
         return (" ".join(content) if content else text), ""
-    at = content.index(naming[-1])  # what follows qualifies it ("The leather one."), what comes before says why
+    at = content.index(naming[-1])  # what follows qualifies it ("The oak one."), what comes before says why
     return " ".join(content[at:]), " ".join(content[:at])
 
 
-#: words that open the request proper after a preamble ("I'm thirsty, go to the ...")
+#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
 _REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
 #: share of the request's function evidence a preamble's function evidence gets
 _PREAMBLE_SCALE = 0.5
@@ -135,10 +135,10 @@ _PREAMBLE_SCALE = 0.5
 
 def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[str]]:
     """(request, preamble): when a request phrase ("go to", "take me to", "find") starts after at
-    least two words, what comes before it only says why ("My back hurts, take me to a cushion")."""
+    least two words, what comes before it only says why ("My feet are cold, take me to a rug")."""
     for i in range(2, len(tokens) - 1):
         if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
-            continue  # "to get it cleaned" is a purpose, not the request
+            continue  # "to get it dried" is a purpose, not the request
         for cmd in lex.commands:
             if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd):
                 return tokens[i:], tokens[:i]
@@ -146,16 +146,16 @@ def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[st
 
 
 def _drop_question_word(tokens: list[str]) -> list[str]:
-    """A leading "which"/"what" before a noun is a determiner ("which lamp is on the desk"): dropped,
-    so the noun starts the target phrase; before a pronoun or verb ("what I use to ...") it stays."""
+    """A leading "which"/"what" before a noun is a determiner ("which vase is on the shelf"): dropped,
+    so the noun starts the target phrase; before a pronoun or verb ("what I need to ...") it stays."""
     if len(tokens) > 1 and tokens[0] in _QUESTION_DETERMINERS and tokens[1] not in _PRONOUNS:
         return tokens[1:]
     return tokens
 
 
 def _place_phrase_last(lex: Lexicon, tokens: list[str]) -> list[str]:
-    """A leading place phrase moved after the request ("in the bedroom, find the armchair" ->
-    "find the armchair in the bedroom"), so the target phrase starts the query as usual."""
+    """A leading place phrase moved after the request ("in the study, find the bookcase" ->
+    "find the bookcase in the study"), so the target phrase starts the query as usual."""
     if not tokens or tokens[0] not in _PLACE_PREPOSITIONS:
         return tokens
     lemmas = [lex.lemma(t) for t in tokens]
@@ -178,7 +178,7 @@ def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
 @lru_cache(maxsize=4096)
 def analyse_query(text: str) -> QueryInfo:
     """Targets, rooms, attributes and functional intent of a natural-language query; words
-    after an exclusion marker ("- not the leather one") only say what the target is not."""
+    after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     skip, bounds = lex.words["skip"], lex.words["boundaries"]
     request, context = _request_sentence(lex, text)
@@ -240,7 +240,7 @@ def analyse_query(text: str) -> QueryInfo:
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
         if attr and not s.has("cue") and _modifies_other_noun(lex, lemmas, s, covered, end):
-            continue  # "where do I put the dirty washing": dirty is the washing, not the target
+            continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
         if attr:
             attr_spans.append(s)
@@ -263,7 +263,7 @@ def analyse_query(text: str) -> QueryInfo:
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)
-    if preamble:  # "I want a cup of tea - go to ...", "It's in the bathroom.": why and where, not what
+    if preamble:  # "I'm chilly - bring me to ...", "It's upstairs in the study.": why and where, not what
         context = analyse_query(" ".join(preamble))
         scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
         for concept, weight in context.afford.items():  # never above what the request itself asks

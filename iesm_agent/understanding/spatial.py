@@ -99,7 +99,7 @@ def parse_query(text: str) -> SpatialQuery:
 
     def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards over attributes and comparatives
-        ("the grey lower cupboard": grey)."""
+        ("the green upper shelf": green)."""
         found, end = [], start
         while end in attr_at or (end > 0 and toks[end - 1] in _EXTREMES):
             if end in attr_at:

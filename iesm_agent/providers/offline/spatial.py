@@ -269,7 +269,7 @@ def weigh(prompt: Prompt, reply: dict) -> dict:
     if sq.relations and named:
         scores = {name: min(int(s), _OTHERS_CAP) for name, s in scores.items()}
     for name in spatial:
-        # with the target's kind unnamed ("what I use to heat water, on the counter") the kind is
+        # with the target's kind unnamed ("what I dry my hands with, by the sink") the kind is
         # evidence as strong as the relation: the spatial expert then shares the decision
         scores[name] = (4 if named else 2) if sq.relations else 0
         hints[name] = sq.words
