@@ -33,6 +33,8 @@ def eval_command(
     base_url: Optional[str] = typer.Option(None, "--base-url", help="Endpoint for openai-compat providers."),
     gt: List[str] = typer.Option([], "--gt", help="Frame directory with gt/ (simulator ground truth): N-SR on the "
                                                   "map built from it; MAP=DIR when the suites have several maps."),
+    keep_prompts: bool = typer.Option(False, "--keep-prompts", help="Keep every rendered prompt and raw reply in "
+                                                                    "results.jsonl (shown in report.html)."),
 ) -> None:
     """Evaluate retrieval methods on query suites: O-SR per query type, MRR, top-3, significance."""
     from ..evals.metrics import parse_thresholds, threshold_failures
@@ -47,7 +49,7 @@ def eval_command(
     with progress_bar("eval") as progress:
         task = progress.add_task("eval", total=None)
         outcome = asyncio.run(run_eval(
-            config, out, resume=resume, concurrency=concurrency,
+            config, out, resume=resume, concurrency=concurrency, keep_prompts=keep_prompts,
             on_start=lambda n: progress.update(task, total=n),
             on_result=lambda _record: progress.advance(task)))
     for error in outcome.suite.errors:
@@ -55,7 +57,7 @@ def eval_command(
     summary = write_run_outputs(out, config, outcome)
     _print_table(summary)
     print(f"{outcome.new} new results ({outcome.done_before} resumed) in {outcome.wall_s:.1f} s; "
-          f"report: {out / 'report.md'}")
+          f"report: {out / 'report.md'}, {out / 'report.html'}")
     failures = threshold_failures(summary, thresholds)
     for failure in failures:
         print(f"iesm: fail-under: {failure}", file=sys.stderr)

@@ -13,6 +13,14 @@ from typing import IO, Optional
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ..errors import IesmError
+from ..retrieval.result import CallTrace
+
+
+class KeptCall(CallTrace):
+    """A model call as journaled: the trace, plus the rendered prompt messages
+    ([{"role", "content"}]) when the run kept prompts."""
+
+    messages: Optional[list[dict[str, str]]] = None
 
 
 class ResultRecord(BaseModel):
@@ -41,6 +49,25 @@ class ResultRecord(BaseModel):
     candidate_recall: Optional[bool] = None
     nav_success: Optional[bool] = None  # reached within 1 m of the ground-truth instance (N-SR)
     path_length_m: Optional[float] = None
+    # the evidence of the answer, for the HTML report (records of older runs lack it)
+    accept: list[int] = []
+    start: Optional[tuple[float, float]] = None  # the robot's start (m), N-SR
+    nav_path: list[tuple[float, float]] = []  # the planned path to the prediction (m), N-SR
+    gate: dict[str, float] = {}  # normalised gate weight per expert
+    hints: dict[str, str] = {}
+    experts: dict[str, list[int]] = {}  # each expert's validated top-kappa
+    abstained: dict[str, float] = {}  # gate weight of each expert that returned no ranking
+    scores: dict[int, float] = {}  # U of the scored ids in `ranking`
+    sum_scores: dict[int, float] = {}  # S
+    peak_scores: dict[int, float] = {}  # P
+    lam: Optional[float] = None
+    kappa: Optional[int] = None
+    deciding_expert: Optional[str] = None
+    notes: list[str] = []
+    names: dict[int, str] = {}  # "label (room)" of the ids mentioned
+    #: every model call: template and its hash, prompt sha256, cost, error; `reply` is "" and
+    #: `messages` None unless the run kept prompts (`iesm eval --keep-prompts`)
+    calls: list[KeptCall] = []
 
     @property
     def key(self) -> tuple[str, str]:

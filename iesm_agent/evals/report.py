@@ -133,7 +133,10 @@ def plot_osr(summary: dict, path: Path) -> bool:
 
 
 def write_outputs(run_dir: Path, summary: dict) -> None:
-    """summary.json, report.md and the plot into `run_dir`."""
+    """summary.json, report.md, the plot and report.html (from the files of `run_dir`) into `run_dir`."""
+    from .html import REPORT, write_report  # the page reads the run back: html imports this module
+
     plotted = bool(summary["types"]) and plot_osr(summary, run_dir / PLOT)
     write_text(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")
     write_text(run_dir / "report.md", render_markdown(summary, PLOT if plotted else None))
+    write_report([run_dir], run_dir / REPORT)
