@@ -18,6 +18,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from ..errors import IesmError
+from ..store.model import Count
 from ..fileio import atomic_write, read_json_model, read_npz, write_png, write_text
 
 FORMAT = "iesm-frames"
@@ -54,7 +55,7 @@ class SceneMeta(BaseModel):
     format: Literal["iesm-frames"] = FORMAT
     version: Literal[1] = VERSION
     scene_id: str = Field(min_length=1)
-    n_frames: int = Field(ge=0)
+    n_frames: Count
     embedding_space: str = Field(min_length=1)
     categories: list[str] = Field(default_factory=list)
     cell_size: float = Field(default=0.05, gt=0)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..store.model import GridSpec, Instance, InstanceGrid, SceneMap, check_grid_size
+from ..store.model import GridSpec, Instance, InstanceGrid, SceneMap
 from .association import unit_rows
 from .categorize import categorize
 from .cells import rowcol_of
@@ -21,9 +21,8 @@ def grid_around(keys: np.ndarray, cell_size: float) -> GridSpec:
         return GridSpec(cell_size=cell_size, origin=(0.0, 0.0), height=0, width=0)
     rows, cols = rowcol_of(keys)
     r0, c0 = int(rows.min()) - MARGIN_CELLS, int(cols.min()) - MARGIN_CELLS
-    check_grid_size(int(rows.max()) - r0 + 1 + MARGIN_CELLS, int(cols.max()) - c0 + 1 + MARGIN_CELLS, None, "frames")
-    return GridSpec(cell_size=cell_size, origin=(c0 * cell_size, r0 * cell_size),
-                    height=int(rows.max()) - r0 + 1 + MARGIN_CELLS, width=int(cols.max()) - c0 + 1 + MARGIN_CELLS)
+    return GridSpec.checked(None, "frames", cell_size=cell_size, origin=(c0 * cell_size, r0 * cell_size),
+                            height=int(rows.max()) - r0 + 1 + MARGIN_CELLS, width=int(cols.max()) - c0 + 1 + MARGIN_CELLS)
 
 
 def flat_cells(keys: np.ndarray, grid: GridSpec) -> np.ndarray:

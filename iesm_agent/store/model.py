@@ -11,9 +11,10 @@ from __future__ import annotations
 from typing import Annotated, Any, Optional
 
 import numpy as np
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
 
 from ..errors import MapFormatError
+from ..fileio import validation_message
 
 SCHEMA_VERSION = 1
 #: largest grid a map may have (cells); 5000 x 5000 is 125 m square at 2.5 cm
@@ -32,6 +33,8 @@ def _not_bool(value: Any) -> Any:
 
 #: an instance or room id: an integer (not `true`) of at most 32 bits
 Id = Annotated[int, BeforeValidator(_not_bool), Field(ge=-MAX_ID, le=MAX_ID)]
+#: a count (frames, cells): a non-negative integer (not `true`) of at most 32 bits
+Count = Annotated[int, BeforeValidator(_not_bool), Field(ge=0, le=MAX_ID)]
 #: a finite coordinate or height in metres, |v| <= MAX_COORD
 Metres = Annotated[float, Field(allow_inf_nan=False, ge=-MAX_COORD, le=MAX_COORD)]
 
@@ -103,6 +106,17 @@ class GridSpec(BaseModel):
             raise ValueError(f"a grid of {self.height} x {self.width} cells is more than the "
                              f"{MAX_GRID_CELLS:,} cells allowed")
         return self
+
+    @classmethod
+    def checked(cls, source: Any = None, where: str | None = "grid", **fields: Any) -> "GridSpec":
+        """A grid computed from input data (frames, boxes): the size limit is checked before
+        anything else and any problem is a one-line `MapFormatError`, not a pydantic error."""
+        check_grid_size(int(fields.get("height", 0)), int(fields.get("width", 0)), source, where)
+        try:
+            return cls(**fields)
+        except ValidationError as exc:
+            message, field = validation_message(exc)
+            raise MapFormatError(f"{field}: {message}" if field else message, source, where) from None
 
     def cell_of(self, x: float, y: float) -> tuple[int, int]:
         """(row, col) of the cell containing world point (x, y); may be outside the grid."""

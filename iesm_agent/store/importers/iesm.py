@@ -27,7 +27,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 from ...errors import MapFormatError
 from ...fileio import load_json
 from ..model import MAX_COORD, MAX_GRID_CELLS, MAX_ID, GridSpec, Id, Instance, InstanceGrid, Room, SceneMap
-from . import check_grid_size, field_path, read_json
+from . import field_path, read_json
 
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "<i2", "int16": "<i2",
               "ushort": "<u2", "uint16": "<u2", "int": "<i4", "int32": "<i4", "uint": "<u4",
@@ -213,8 +213,7 @@ def _with_ply(scene_id: str, source: str, instances: list[Instance], rooms: list
     if len(v) and (cols.min() < 0 or rows.min() < 0):
         raise MapFormatError("negative cell index in x or y", ply_path, "vertex")
     height, width = (int(rows.max()) + 1, int(cols.max()) + 1) if len(v) else (0, 0)
-    check_grid_size(height, width, ply_path)
-    grid = GridSpec(cell_size=cell_size, origin=(0.0, 0.0), height=height, width=width)
+    grid = GridSpec.checked(ply_path, "grid", cell_size=cell_size, origin=(0.0, 0.0), height=height, width=width)
     ids = v["instance_id"].astype(np.int64)
     known = np.array(sorted(inst.id for inst in instances), np.int64)
     keep = np.isin(ids, known)

@@ -18,7 +18,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ...errors import MapFormatError
 from ...colours import colour_name
 from ..model import GridSpec, Id, Instance, InstanceGrid, Metres, Room, SceneMap
-from . import check_grid_size, field_path, read_json
+from . import field_path, read_json
 
 MARGIN = 0.25  # m of free space around the union of boxes
 Extent = Annotated[float, Field(gt=0, le=10_000)]
@@ -149,9 +149,8 @@ def _grid_for(spec: ObjectList, cell_size: float, path: Path) -> GridSpec:
         lo = hi = np.zeros(2)
     origin = np.floor((lo - MARGIN) / cell_size) * cell_size
     shape = np.ceil((hi + MARGIN - origin) / cell_size).astype(int)
-    check_grid_size(int(shape[1]), int(shape[0]), path)
-    return GridSpec(cell_size=cell_size, origin=(float(origin[0]), float(origin[1])),
-                    height=int(shape[1]), width=int(shape[0]))
+    return GridSpec.checked(path, "grid", cell_size=cell_size, origin=(float(origin[0]), float(origin[1])),
+                            height=int(shape[1]), width=int(shape[0]))
 
 
 def _resolve_rooms(spec: ObjectList, path: Path) -> tuple[list[Room], list[Optional[Room]]]:
