@@ -16,6 +16,7 @@ import json
 from pathlib import Path
 from typing import Any, Iterable
 
+from . import contract
 from .errors import IesmError
 from .providers.base import Message
 from .resources import resource_dir
@@ -78,6 +79,17 @@ class PromptLibrary:
         )
         self._env.filters["fence"] = fence
         self._env.filters["fence_lines"] = fence_lines
+        self._env.globals.update(task_line=contract.task_line, reply_format=contract.reply_format)
+
+    def has(self, name: str) -> bool:
+        """True when a template `name` exists in the user directories or the shipped prompts."""
+        return any((d / name).is_file() for d in self.dirs)
+
+    def template_for(self, expert: str, default: str) -> str:
+        """The template an expert renders: `expert_<name>.j2` when one exists (a prompt experiment
+        for that expert alone), else its spec's `default`."""
+        own = f"expert_{expert}.j2"
+        return own if self.has(own) else default
 
     def source_hash(self, name: str) -> str:
         """sha256 (hex, 12 chars) of the template source that `name` resolves to."""

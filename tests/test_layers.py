@@ -13,7 +13,7 @@ import iesm_agent
 ROOT = Path(iesm_agent.__file__).parent
 
 #: bottom to top; a module may import its own package and any package listed before it
-LAYERS = ["errors", "resources", "fileio", "cachedir", "config", "lexicon", "colours", "encoding", "embeddings", "store", "frames", "segment",
+LAYERS = ["errors", "resources", "fileio", "cachedir", "contract", "config", "lexicon", "colours", "encoding", "embeddings", "store", "frames", "segment",
           "understanding", "providers", "prompting", "mapping", "rooms", "captioning", "retrieval", "nav",
           "server", "sim", "evals", "cli", "demo"]
 

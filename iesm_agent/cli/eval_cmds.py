@@ -17,7 +17,7 @@ def eval_command(
     method: List[str] = typer.Option(["mtefr"], "--method", "-m",
                                      help="Methods, comma separated: mtefr, spr, keyword, experts:obj,desc, ..."),
     provider: str = typer.Option("offline", "--provider", "-p", help="Model spec, e.g. offline, openai:gpt-4o-mini."),
-    prompts: List[Path] = typer.Option([], "--prompts", help="Prompt directory; each one is a variant of every method."),
+    prompts: List[Path] = typer.Option([], "--prompts", help="Prompt directory, or default for the shipped prompts; each one is a variant of every method."),
     experts_dir: List[Path] = typer.Option([], "--experts-dir",
                                            help="Extra expert spec directory (repeatable), for every variant."),
     out: Path = typer.Option(..., "--out", "-o", help="Run directory (results.jsonl, summary.json, report.md)."),

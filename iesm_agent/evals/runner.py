@@ -71,19 +71,27 @@ def split_methods(specs: list[str]) -> list[str]:
     return methods
 
 
+#: the name `--prompts` takes for the shipped templates
+SHIPPED_PROMPTS = "default"
+
+
 def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Variant]:
-    """One variant per method, or per (method, prompt dir) named `method@dirname`."""
+    """One variant per method, or per (method, prompt dir) named `method@dirname`; the prompt dir
+    `default` names the shipped templates (`method@default`), to compare against them."""
     if not methods:
         raise IesmError("no retrieval method given", "--method")
     if not prompt_dirs:
         return [Variant(name=m, method=m) for m in dict.fromkeys(methods)]
-    labels: dict[str, Path] = {}
+    labels: dict[str, Path | None] = {}
     for d in map(Path, prompt_dirs):
+        if str(d) == SHIPPED_PROMPTS and not d.is_dir():
+            labels[SHIPPED_PROMPTS] = None  # `--prompts default`: the shipped templates, as a variant
+            continue
         if not d.is_dir():
-            raise IesmError("prompt directory does not exist", d)
+            raise IesmError("prompt directory does not exist (use 'default' for the shipped prompts)", d)
         label = d.resolve().name or "prompts"
         labels[label if label not in labels else f"{label}{len(labels)}"] = d.resolve()
-    return [Variant(name=f"{m}@{label}", method=m, prompts_dir=str(d))
+    return [Variant(name=f"{m}@{label}", method=m, prompts_dir=str(d) if d else None)
             for m in dict.fromkeys(methods) for label, d in labels.items()]
 
 
@@ -173,9 +181,23 @@ def check_variants(config: RunConfig) -> None:
             raise IesmError("prompt directory does not exist", variant.prompts_dir)
 
 
-def _rank(ranking: list[int], accept: list[int]) -> Optional[int]:
+def _rank(ranking: list[int], scored: set[int], accept: list[int]) -> Optional[int]:
+    """Rank of the first accepted id within the full candidate `ranking`, the same depth for
+    every method: the ids the method `scored` first in its order, then the rest tied, each
+    counted at its expected position under a random order, rounded up (k accepted among n
+    unscored: len(scored) + ceil((n + 1) / (k + 1))). A method that scores 2 ids and one that
+    scores 10 are judged on the same full ranking; the candidates' padding order plays no part.
+    None when no candidate is accepted."""
+    import math
+
     accepted = set(accept)
-    return next((i for i, iid in enumerate(ranking, start=1) if iid in accepted), None)
+    head = [i for i in ranking if i in scored]
+    rank = next((k for k, iid in enumerate(head, start=1) if iid in accepted), None)
+    if rank is not None:
+        return rank
+    tail = [i for i in ranking if i not in scored]
+    hits = sum(i in accepted for i in tail)
+    return len(head) + math.ceil((len(tail) + 1) / (hits + 1)) if hits else None
 
 
 @dataclass
@@ -270,8 +292,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
 async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None,
                recorder: PromptRecorder | None = None) -> ResultRecord:
-    """One retrieval as a record; rank and ranking cover the ids the method scored (the rest of
-    the candidate set follows in arbitrary candidate order and would inflate MRR). With `nav`
+    """One retrieval as a record; `ranking` lists the ids the method scored, `rank` is the target's
+    rank within the full candidate ranking (`_rank`: unscored candidates tied). With `nav`
     (NavTrials) and a start, the simulated robot then goes to the retrieved instance (N-SR).
     The record keeps the evidence the HTML report shows (gate, experts, U/S/P, calls)."""
     from .navigation import record_fields
@@ -282,7 +304,7 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None,
     return ResultRecord(
         id=q.id, variant=variant.name, method=variant.method, type=q.type, group=q.group, map=q.map, query=q.query,
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
-        rank=_rank(scored, q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
+        rank=_rank(res.ranking, set(res.scores), q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
         tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
         candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id),
         accept=q.accept, start=q.start, nav_path=_planned_path(nav, q.start, res.instance_id),

@@ -24,10 +24,11 @@ if TYPE_CHECKING:
 
 def _expert_call(session: Session, spec: ExpertSpec, query: str, views: "CandidateViews", kappa: int,
                  hint: str = ""):
-    messages = session.render(spec.template, query=query, focus=spec.focus, hint=hint,
-                              candidates=views.fields(spec.fields), kappa=kappa,
+    template = session.prompts.template_for(spec.name, spec.template)
+    messages = session.render(template, query=query, focus=spec.focus, hint=hint, expert=spec.name,
+                              expert_title=spec.title, candidates=views.fields(spec.fields), kappa=kappa,
                               references=views.references(spec.fields))
-    return session.call(spec.name, spec.template, messages, ranking_schema(kappa))
+    return session.call(spec.name, template, messages, ranking_schema(kappa))
 
 
 def _gate_weights(session: Session, reply: Reply, names: list[str]) -> tuple[dict[str, float], dict[str, str]]:

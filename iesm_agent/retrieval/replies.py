@@ -10,10 +10,11 @@ import math
 from collections.abc import Collection, Sequence
 from typing import Any
 
+from .. import contract
 from ..providers.jsonreply import parse_json_reply
 
 #: the gate scores each expert on this scale
-GATE_MAX = 4.0
+GATE_MAX = float(contract.GATE_MAX)
 
 
 def _number(value: Any) -> float | None:
@@ -62,7 +63,7 @@ def _instance_id(item: Any) -> int | None:
 
 
 def parse_ranking(text: str, candidates: Collection[int], kappa: int,
-                  key: str = "ranked_instance_ids") -> tuple[list[int], list[Any]]:
+                  key: str = contract.RANKING_KEY) -> tuple[list[int], list[Any]]:
     """Expert reply {key: [id, ...]} -> (valid ids best first, deduplicated, at most `kappa`;
     the entries dropped because they are not ids of `candidates`). Numeric strings are accepted."""
     data = parse_json_reply(text)
@@ -92,26 +93,16 @@ def parse_keywords(text: str) -> tuple[str | None, str | None]:
     return clean(data.get("object")), clean(data.get("room"))
 
 
-#: JSON schemas of the replies, passed to models that support structured output
-GATE_SCHEMA: dict[str, Any] = {"type": "object", "required": ["scores"], "properties": {
-    "scores": {"type": "object", "additionalProperties": {"type": "integer", "minimum": 0, "maximum": 4}},
-    "hints": {"type": "object", "additionalProperties": {"type": "string"}}}}
-KEYWORD_SCHEMA: dict[str, Any] = {"type": "object", "required": ["object", "room"], "properties": {
-    "object": {"type": ["string", "null"]}, "room": {"type": ["string", "null"]}}}
-
-
-def ranking_schema(kappa: int) -> dict[str, Any]:
-    """JSON schema of an expert / SPR reply: an empty list with a reason in `abstain` says the
-    query holds nothing of the expert's kind."""
-    return {"type": "object", "required": ["ranked_instance_ids"], "properties": {
-        "ranked_instance_ids": {"type": "array", "items": {"type": "integer"}, "maxItems": kappa},
-        "abstain": {"type": "string"}}}
+#: JSON schemas of the replies, passed to models that support structured output (see `contract`)
+GATE_SCHEMA: dict[str, Any] = contract.gate_schema()
+KEYWORD_SCHEMA: dict[str, Any] = contract.keyword_schema()
+ranking_schema = contract.ranking_schema
 
 
 def abstain_reason(text: str) -> str:
     """The reason an expert reply gives for abstaining ("" when it gives none)."""
     try:
-        reason = parse_json_reply(text).get("abstain")
+        reason = parse_json_reply(text).get(contract.ABSTAIN_KEY)
     except ValueError:
         return ""
     return reason.strip()[:200] if isinstance(reason, str) else ""

@@ -11,6 +11,7 @@ import json
 import time
 from typing import Any
 
+from ... import contract
 from ...embeddings import encoder_name, get_encoder
 from ..base import Capabilities, ChatOptions, Completion, Message, Model, Usage
 from . import spatial, tasks
@@ -35,13 +36,13 @@ class OfflineModel(Model):
     def answer(self, messages: list[Message]) -> dict[str, Any]:
         """The reply object for `messages`."""
         prompt = read_prompt(messages)
-        if prompt.task == "gate":
+        if prompt.task == contract.GATE:
             return spatial.weigh(prompt, tasks.gate(prompt))
-        if prompt.task == "rank" and spatial.SPATIAL_MARKER in prompt.instructions:
+        if prompt.task == contract.RANK_GEOMETRY:
             return spatial.rank(prompt)
-        if prompt.task == "rank":
+        if prompt.task == contract.RANK:
             return tasks.rank(prompt, self.encoder)
-        if prompt.task == "keyword":
+        if prompt.task == contract.KEYWORD:
             return tasks.keyword(prompt)
         return {}
 

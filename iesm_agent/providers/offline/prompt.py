@@ -7,6 +7,7 @@ import json
 import re
 from dataclasses import dataclass, field
 
+from ... import contract
 from ..base import Message
 
 _AT_MOST = re.compile(r"at most\s+(\d+)", re.I)
@@ -23,7 +24,7 @@ _ROLE_WORDS = {
 class Prompt:
     """What the offline model understood from the messages."""
 
-    task: str                                  # "gate" | "rank" | "keyword" | "unknown"
+    task: str                                  # a `contract` task name, or "unknown"
     query: str = ""
     candidate_lines: list[str] = field(default_factory=list)  # one JSON object per line
     reference_lines: list[str] = field(default_factory=list)  # landmarks outside the candidates (spatial.j2)
@@ -38,14 +39,7 @@ def read_prompt(messages: list[Message]) -> Prompt:
     """Parse the rendered prompt; missing pieces stay empty, nothing raises."""
     text = "\n".join(m.text() for m in messages if m.role != "assistant")
     instructions = _without_fences(text)  # fenced data is data: it never sets the task
-    if "ranked_instance_ids" in instructions:
-        task = "rank"
-    elif '"scores"' in instructions:
-        task = "gate"
-    elif '"object"' in instructions and '"room"' in instructions:
-        task = "keyword"
-    else:
-        task = "unknown"
+    task = contract.read_task(instructions) or _task_from_format(instructions)
     prompt = Prompt(task=task, query=_fenced_string(text, "query"), hint=_fenced_string(text, "hint"))
     prompt.focus = (_between(text, "focus") or "").strip()
     kappa = _AT_MOST.match(instructions, max(0, instructions.lower().rfind("at most")))
@@ -56,6 +50,18 @@ def read_prompt(messages: list[Message]) -> Prompt:
     prompt.instructions = instructions
     prompt.experts = [e for e in _json_objects(_lines(text, "experts")) if isinstance(e.get("name"), str)]
     return prompt
+
+
+def _task_from_format(instructions: str) -> str:
+    """The task of a prompt without a task line (a user template), from the reply format it asks
+    for, as a reader would infer it."""
+    if contract.RANKING_KEY in instructions:
+        return contract.RANK
+    if '"scores"' in instructions:
+        return contract.GATE
+    if '"object"' in instructions and '"room"' in instructions:
+        return contract.KEYWORD
+    return "unknown"
 
 
 def focus_role(focus: str) -> str:

@@ -18,11 +18,9 @@ import numpy as np
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
 from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
-from .prompt import Prompt
 from ...understanding.spatial import SIZE_EXTREMES, Relation, parse_query
+from .prompt import Prompt
 
-#: words in spatial.j2's system block that make a ranking prompt a spatial one
-SPATIAL_MARKER = "spatial-relation expert"
 #: words in an expert's gate description that make the gate score it by the query's relations
 GATE_MARKER = "spatial relations"
 #: gate score of the other experts when the query picks its target by a relation
