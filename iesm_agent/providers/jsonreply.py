@@ -42,7 +42,7 @@ def parse_json_reply(text: str) -> dict[str, Any]:
         found = _loads_dict(candidate.strip())
         if found is not None:
             return found
-    starts = [i for i, ch in enumerate(text) if ch == "{"][:_MAX_ATTEMPTS]
+    starts = [m.start() for _, m in zip(range(_MAX_ATTEMPTS), re.finditer(r"\{", text))]
     for start in starts:
         end = _matching_brace(text, start)
         if end is not None:
@@ -87,6 +87,8 @@ def _matching_brace(text: str, start: int) -> int | None:
             i = end
         elif ch in "{[":
             depth += 1
+            if depth > MAX_REPLY_DEPTH:  # deeper than a reply may be: stop scanning here
+                return None
         elif ch in "}]":
             depth -= 1
             if depth == 0:
