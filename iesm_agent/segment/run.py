@@ -33,7 +33,7 @@ def default_vocabulary() -> tuple[list[str], list[str]]:
     """(categories, room names) from the shipped lexicon."""
     from ..lexicon import read_data
 
-    return sorted(read_data("categories")["groups"]), list(read_data("rooms")["rooms"])
+    return sorted(read_data("categories.json")["groups"]), list(read_data("rooms.json")["rooms"])
 
 
 def segment_frame_set(frames: FrameSet, seg_dir: Path, *, spec: Optional[SegmenterSpec] = None, segmenter=None,
