@@ -84,7 +84,8 @@ class Lexicon:
     def correct(self, token: str, extra: frozenset[str] = frozenset()) -> str:
         """`token`, or the lexicon word (or word of `extra`, such as the map's labels) it misspells:
         one edit away (insertion, deletion, substitution or transposition of neighbours) for words of
-        4 to 8 letters, two for longer ones, the closest when it is unique. Known words, English
+        4 to 6 letters, two for longer ones (keeping the first letter), the closest when it is
+        unique, preferring words with the same first letter. Known words, English
         words (`english_words.txt`) and short or non-alphabetic tokens are never changed."""
         if len(token) < 4 or not token.isalpha() or token in self.vocab or token in self.lemmas \
                 or token in _english() or token in extra or self.lemma(token) in self.vocab:
@@ -96,10 +97,15 @@ class Lexicon:
         from rapidfuzz.distance import OSA
         from rapidfuzz.process import extract
 
-        limit = 1 if len(token) < 9 else 2
+        limit = 1 if len(token) < 7 else 2
         choices = self._spelling_targets | extra
-        found = extract(token, choices, scorer=OSA.distance, score_cutoff=limit, limit=4)
-        closest = [w for w, d, _ in found if d == found[0][1]] if found else []
+        found = extract(token, choices, scorer=OSA.distance, score_cutoff=limit, limit=6)
+        # two edits only keep the first letter (people rarely mistype it: "cubbard" is a
+        # cupboard, "scullery" no cutlery); among equally close words, those keeping it first
+        found = [(w, d) for w, d, _ in found if d < 2 or w[0] == token[0]]
+        same_start = [(w, d) for w, d in found if w[0] == token[0]]
+        found = sorted(same_start or found, key=lambda wd: wd[1])
+        closest = [w for w, d in found if d == found[0][1]] if found else []
         # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
         best = min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
         if len(self._correction_cache) < 100_000:
