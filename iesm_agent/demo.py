@@ -4,7 +4,9 @@ Simulate an apartment (RGB-D frames, masks, ground truth), build the instance-le
 segment rooms, caption every instance, evaluate the map against ground truth, generate a query
 suite from ground truth, evaluate MTEFR against SPR, keyword and the ablations, answer three
 example queries with explanations and plan a path to a retrieved goal. Pictures go to
-`out/demo/` (override with IESM_DEMO_DIR): instance_map.png, room_map.png, path.png, results.png.
+`out/demo/` (override with IESM_DEMO_DIR): instance_map.png, room_map.png, path.png, results.png,
+and two self-contained pages: eval/report.html (every query with its evidence) and map.html
+(the map viewer).
 
 Each step runs the real `iesm` command line (printed first, so it can be copied) in this process,
 so the embedding model loads once.
@@ -95,9 +97,10 @@ def main() -> int:
         _run(["gen-queries", str(scene), "--gt", str(frames), "--types", TYPES, "--per-type", "10",
               "--seed", "0", "-o", str(suite)], "8. a query suite written from ground truth")
         shutil.rmtree(run_dir, ignore_errors=True)  # a fresh run each time
-        _run(["eval", str(suite), "--method", METHODS, "--gt", str(frames), "-o", str(run_dir)],
+        _run(["eval", str(suite), "--method", METHODS, "--gt", str(frames), "--keep-prompts", "-o", str(run_dir)],
              "9. MTEFR against SPR, keyword and the ablations (Sec. 4.3)")
         shutil.copyfile(run_dir / "osr_by_type.png", out / "results.png")
+        _run(["view", str(scene), "-o", str(out / "map.html")], "   pages: the map viewer (the eval wrote report.html)")
         for query in _examples(suite):
             _run(["ask", str(scene), query, "--explain"], "10. an example query, explained")
         from .retrieval import Retriever
@@ -114,7 +117,7 @@ def main() -> int:
         print(f"\ndemo failed at {exc}", file=sys.stderr)
         return 1
     print(f"\nDemo finished in {time.perf_counter() - t0:.0f} s. Outputs in {out}/: instance_map.png, room_map.png, "
-          f"path.png, results.png, {run_dir.name}/report.md, {scene.name}")
+          f"path.png, results.png, {run_dir.name}/report.md, {run_dir.name}/report.html, map.html, {scene.name}")
     return 0
 
 

@@ -53,7 +53,8 @@ def significance_section(data: dict) -> str:
         for t in tests)
     return ('<section id="significance" aria-labelledby="h-sig"><h2 id="h-sig">Paired significance</h2>'
             '<p class="note">Exact two-sided McNemar test on per-query correctness; A only / B only: queries only '
-            'that method got right. Rows with p &lt; 0.05 are marked.</p><details><summary>'
+            'that method got right. Rows with p &lt; 0.05 are marked.</p>'
+            f'<details{" open" if len(tests) <= 30 else ""}><summary>'
             f'{len(tests)} tests</summary><div class="scroll"><table><caption>Paired tests</caption><thead><tr>'
             '<th scope="col">A</th><th scope="col">B</th><th scope="col">type</th><th scope="col">n</th>'
             '<th scope="col">A only</th><th scope="col">B only</th><th scope="col">p</th></tr></thead>'

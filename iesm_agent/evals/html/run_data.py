@@ -150,26 +150,41 @@ class MapCache:
         return None
 
 
-def _trim(text: str | None, budget: list[int]) -> str | None:
-    """`text` cut to MESSAGE_CHARS, charged to the shared budget (None once it is spent)."""
-    if text is None or budget[0] <= 0:
-        return None
-    cut = text[:MESSAGE_CHARS] + (f"\n... [{len(text) - MESSAGE_CHARS} more characters]"
-                                  if len(text) > MESSAGE_CHARS else "")
-    budget[0] -= len(cut)
-    return cut
+class Texts:
+    """Kept prompt messages and replies, each distinct text stored once (system prompts and
+    candidate blocks repeat across calls and queries): records refer to them by index. A text is
+    cut to MESSAGE_CHARS; once PROMPT_BUDGET characters are stored, new texts are left out (None)."""
+
+    def __init__(self) -> None:
+        self.texts: list[str] = []
+        self.index: dict[str, int] = {}
+        self.left = PROMPT_BUDGET
+
+    def ref(self, text: str | None) -> int | None:
+        if text is None:
+            return None
+        if text not in self.index:
+            if self.left <= 0:
+                return None
+            cut = text[:MESSAGE_CHARS] + (f"\n... [{len(text) - MESSAGE_CHARS} more characters]"
+                                          if len(text) > MESSAGE_CHARS else "")
+            self.left -= len(cut)
+            self.index[text] = len(self.texts)
+            self.texts.append(cut)
+        return self.index[text]
 
 
-def record_data(record: ResultRecord, variant: str, map_key: str | None, budget: list[int]) -> dict:
-    """One record as the page's JSON: the query, outcome and evidence; kept prompts within budget."""
+def record_data(record: ResultRecord, variant: str, map_key: str | None, texts: Texts) -> dict:
+    """One record as the page's JSON: the query, outcome and evidence; kept prompts and replies
+    as indices into `texts`."""
     calls = []
     for c in record.calls:
         call = c.model_dump(exclude={"messages", "reply", "prompt_sha256"})
         call["prompt_sha256"] = c.prompt_sha256[:12]
         if c.messages is not None:
-            call["messages"] = [{"role": m.get("role", ""), "content": _trim(m.get("content", ""), budget)}
+            call["messages"] = [{"role": m.get("role", ""), "content": texts.ref(m.get("content", ""))}
                                 for m in c.messages]
-            call["reply"] = _trim(c.reply, budget)
+            call["reply"] = texts.ref(c.reply)
         calls.append(call)
     data = record.model_dump(mode="json", exclude={"calls", "variant"})
     data.update(variant=variant, map_key=map_key, calls=calls)
@@ -186,7 +201,7 @@ def report_data(run_dirs: list[str | Path]) -> dict:
     types = ordered_types({r.type or UNTYPED for run in runs for r in run.records} - {UNTYPED})
     if any(r.type is None for run in runs for r in run.records):
         types.append(UNTYPED)
-    maps, budget = MapCache(), [PROMPT_BUDGET]
+    maps, texts = MapCache(), Texts()
     records, dropped = [], 0
     for run in runs:
         bases = [Path(s).parent for s in run.config.get("suites", []) if isinstance(s, str)]
@@ -195,7 +210,7 @@ def report_data(run_dirs: list[str | Path]) -> dict:
             if len(records) >= MAX_ROWS:
                 dropped += 1
                 continue
-            records.append(record_data(record, names[run.label, record.variant], maps.key(record.map, bases), budget))
+            records.append(record_data(record, names[run.label, record.variant], maps.key(record.map, bases), texts))
     kept = any(c.messages is not None for run in runs for r in run.records for c in r.calls)
     return {
         "runs": [{"label": run.label, "directory": str(run.directory), "provider": run.config.get("provider"),
@@ -208,9 +223,10 @@ def report_data(run_dirs: list[str | Path]) -> dict:
         "metrics": metric_rows(runs, names, types),
         "significance": significance_rows(runs, names),
         "records": records,
+        "texts": texts.texts,
         "maps": maps.layers,
         "missing_maps": maps.missing,
         "limits": {"rows": MAX_ROWS, "rows_left_out": dropped, "message_chars": MESSAGE_CHARS,
                    "prompt_budget": PROMPT_BUDGET, "prompts_kept": kept,
-                   "prompts_left_out": kept and budget[0] <= 0, "page_bytes": MAX_PAGE_BYTES},
+                   "prompts_left_out": kept and texts.left <= 0, "page_bytes": MAX_PAGE_BYTES},
     }

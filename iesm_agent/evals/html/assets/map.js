@@ -52,6 +52,7 @@
     const found = text ? DATA.instances.filter((i) => matches(i, text)) : [];
     const ids = new Set(found.map((i) => String(i.id)));
     for (const p of paths) p.classList.toggle("dim", text !== "" && !ids.has(p.dataset.id));
+    svg.classList.toggle("searching", text !== "");
     hits.textContent = text ? `${found.length} of ${DATA.instances.length} instances match` : "";
     document.body.dataset.hits = text ? String(found.length) : "";
     results.replaceChildren(...found.slice(0, 50).map((i) =>

@@ -83,14 +83,14 @@
     const experts = Array.from(new Set([...Object.keys(r.gate), ...Object.keys(r.abstained)]));
     if (!experts.length) return el("p", {class: "note"}, "No gate (a single-pass or keyword method).");
     return el("table", {class: "gate"}, el("caption", {}, "Gate weights"),
-      el("thead", {}, el("tr", {}, ["expert", "weight", "", "hint"].map((h) => el("th", {scope: "col"}, h)))),
+      el("thead", {}, el("tr", {}, ["expert", "weight (%)", "", "hint"].map((h) => el("th", {scope: "col"}, h)))),
       el("tbody", {}, experts.map((e) => {
         const abst = e in r.abstained;
         const w = abst ? r.abstained[e] : r.gate[e];
         return el("tr", {class: abst ? "abstained" : ""},
           el("th", {scope: "row"}, e + (e === r.deciding_expert ? " (decided)" : "")),
           el("td", {class: "num"}, pct(w)),
-          el("td", {}, el("span", {class: "bar", style: `width:${Math.round(100 * (w || 0))}%`, "aria-hidden": "true"})),
+          el("td", {class: "barcell"}, el("span", {class: "bar", style: `width:${Math.round(100 * (w || 0))}%`, "aria-hidden": "true"})),
           el("td", {}, abst ? "abstained: weight given to the others" : (r.hints[e] || "")));
       })));
   }
@@ -117,6 +117,10 @@
         el("td", {}, r.accept.includes(id) ? el("span", {class: "tag ok"}, "accepted") : "")))));
   }
 
+  function kept_text(i) {
+    return i === null || i === undefined ? "(left out: the page's prompt budget was spent)" : DATA.texts[i];
+  }
+
   function callsSection(r) {
     if (!r.calls.length) return null;
     const table = el("table", {class: "calls"}, el("caption", {}, "Model calls"),
@@ -128,8 +132,8 @@
         el("td", {}, c.cached ? "yes" : ""), el("td", {}, c.error || "")))));
     const kept = r.calls.filter((c) => c.messages);
     const prompts = kept.map((c) => el("details", {class: "prompt"}, el("summary", {}, `${c.name}: prompt and reply`),
-      c.messages.map((m) => [el("h5", {}, m.role), el("pre", {}, m.content === null ? "(left out: page budget)" : m.content)]),
-      el("h5", {}, "reply"), el("pre", {}, c.reply === null ? "(left out: page budget)" : c.reply)));
+      c.messages.map((m) => [el("h5", {}, m.role), el("pre", {}, kept_text(m.content))]),
+      el("h5", {}, "reply"), el("pre", {}, kept_text(c.reply))));
     return el("section", {}, el("h3", {}, "Calls"), table,
       kept.length ? prompts : el("p", {class: "note"}, "Prompts and replies were not kept (iesm eval --keep-prompts keeps them)."));
   }
