@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-fast lint test-llm bench install clean
+.PHONY: demo test test-fast lint test-llm bench install clean browser
 
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
@@ -20,8 +20,19 @@ install: $(STAMP)
 demo: $(STAMP)
 	HF_HUB_OFFLINE=1 $(BIN)/python -m iesm_agent.demo
 
-test: $(STAMP)
+test: $(STAMP) browser
 	HF_HUB_OFFLINE=1 $(BIN)/python -m pytest -q
+
+# Headless Chromium for the browser checks of the HTML report and map viewer
+# (tests/test_html_report.py): installed with apt-get when this runs as root; best effort, never
+# fails the build (without a browser those tests are skipped and the static checks run).
+browser:
+	-@if command -v chromium >/dev/null 2>&1; then echo "browser checks: $$(chromium --version 2>/dev/null)"; \
+	elif [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+		( apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium ) >/dev/null 2>&1 \
+		&& echo "browser checks: installed $$(chromium --version 2>/dev/null)" \
+		|| echo "browser checks: could not install chromium; the HTML tests check the static pages only"; \
+	else echo "browser checks: no chromium (not root or no apt-get); the HTML tests check the static pages only"; fi
 
 # the fast subset: everything not marked slow
 test-fast: $(STAMP)
