@@ -1,5 +1,9 @@
 """Retrieval metrics (paper Sec. 4.3): O-SR per query type and overall, MRR and top-k from the
-rank of the first accepted id."""
+rank of the first accepted id. That rank is taken within the full candidate ranking for every
+method (runner._rank): the ids a method scored in its order, then the candidates it did not score
+tied at their expected position under a random order (rounded up). So SPR (2 scored ids), MTEFR
+(2-5) and keyword (0-10) are compared at the same depth, and no method gains from the order the
+unscored candidates happen to be listed in."""
 
 from __future__ import annotations
 

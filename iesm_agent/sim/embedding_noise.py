@@ -5,7 +5,8 @@ For an instance of label l, with category text vectors V (J, D) and similarities
   + `appearance` x (a_l + a_o) / sqrt(2): c drawn once per object from p_l(c) ~ exp(S[l, c] / T),
   c != l (this armchair looks a bit like a sofa from every side), g_o ~ N(0, I_J) a persistent
   error in the span of the categories, a_l (per category) and a_o (per object) random unit
-  vectors: what an image feature holds besides the category. The appearance part keeps views of
+  vectors orthogonal to the span of the categories: what an image feature holds besides the
+  category (orthogonal, so it biases no category: a random a_l would mislabel every wall alike). The appearance part keeps views of
   one object alike (cosine ~0.9, as image features of one object are) while the category part
   stays weak, as for CLIP-like features scored against text;
 - per view, a pull s x v_c' towards another similar category (s half-normal x `view_confusion`);
@@ -40,6 +41,7 @@ class EmbeddingNoise:
         prob = np.exp(logits)
         self.similar = prob / prob.sum(axis=1, keepdims=True)
         self.p, self.seed = profile, seed
+        self.basis = np.linalg.qr(self.v.T)[0]  # (D, J) orthonormal basis of the category span
         self._looks: dict[tuple[int, str], np.ndarray] = {}
 
     def look(self, instance: int, label: str) -> np.ndarray:
@@ -52,11 +54,15 @@ class EmbeddingNoise:
             g = self.v.T @ rng.standard_normal(len(self.names))
             a_obj = rng.standard_normal(self.v.shape[1])
             a_label = np.random.default_rng([zlib.crc32(label.encode()), 103]).standard_normal(self.v.shape[1])
+            a_obj, a_label = self._orthogonal(a_obj), self._orthogonal(a_label)
             u = (self.v[k] + self.p.instance_bias * rng.uniform(0.3, 1.0) * self.v[other]
                  + self.p.instance_structured * g / np.linalg.norm(g)
                  + self.p.appearance * (a_label / np.linalg.norm(a_label) + a_obj / np.linalg.norm(a_obj)) / np.sqrt(2))
             self._looks[key] = u
         return self._looks[key]
+
+    def _orthogonal(self, x: np.ndarray) -> np.ndarray:
+        return x - self.basis @ (self.basis.T @ x)
 
     def embed(self, instance: int, label: str, leaks: dict[int, float], labels: dict[int, str], area: int,
               depth_m: float, rng: np.random.Generator) -> np.ndarray:

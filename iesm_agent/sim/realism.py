@@ -73,8 +73,8 @@ REALISTIC = Realism(
     grazing_cos=0.12, ambient=0.4, light_strength=0.8, light_falloff=3.0, albedo_jitter=0.15, texture_amp=0.08,
     exposure_jitter=0.15, white_balance_jitter=0.05, pixel_noise=3.0, boundary_wander_px=3.0, small_area_px=1000.0,
     far_m=8.0,
-    appearance=6.0, instance_bias=0.5, instance_structured=0.8, view_confusion=0.5, similarity_temperature=0.08,
-    structured_noise=1.0, isotropic_noise=0.2,
+    appearance=7.0, instance_bias=0.6, instance_structured=1.0, view_confusion=0.7, similarity_temperature=0.08,
+    structured_noise=1.4, isotropic_noise=0.2,
 )
 PROFILES = {"easy": EASY, "realistic": REALISTIC}
 
