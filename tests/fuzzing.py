@@ -131,3 +131,27 @@ def fuzz_json(reader: str, doc: Any, write: Callable[[str], None], argv: list[st
         outcomes["refused" if code == 2 else "accepted"] += 1
         Tally.add(reader, f"{kind}:{'refused' if code == 2 else 'accepted'}")
     return outcomes
+
+
+H, W = 12, 16  # tiny frames
+
+
+def write_tiny_frames(d: Path, n: int = 2) -> Path:
+    """`n` tiny valid frames with hash-space embeddings in `d` (build-map accepts them)."""
+    import numpy as np
+
+    from iesm_agent.embeddings import HASH_SPACE, text_vectors
+    from iesm_agent.frames import Frame, Intrinsics, SceneMeta, Segmentation, write_frame, write_frame_set
+
+    emb, _ = text_vectors(["chair", "table"], HASH_SPACE)
+    write_frame_set(d, SceneMeta(scene_id="fz", n_frames=n, embedding_space=HASH_SPACE, categories=["chair", "table"]),
+                    Intrinsics(width=W, height=H, fx=8.0, fy=8.0, cx=7.5, cy=5.5))
+    for i in range(n):
+        masks = np.zeros((2, H, W), bool)
+        masks[0, 2:8, 3:9] = True
+        masks[1, 7:, 8:] = True
+        pose = np.eye(4)
+        pose[:3, 3] = [0.1 * i, 0.0, 1.2]
+        write_frame(d, Frame(index=i, rgb=np.full((H, W, 3), 120, np.uint8), depth=np.full((H, W), 2.0, np.float32),
+                             pose=pose, segmentation=Segmentation(masks, emb, np.array([0.9, 0.8], np.float32))))
+    return d

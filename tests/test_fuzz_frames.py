@@ -12,30 +12,14 @@ import zipfile
 import numpy as np
 import pytest
 
-from fuzzing import FAST, SLOW, Tally, check_cli, mutations
+from fuzzing import FAST, SLOW, H, W, Tally, check_cli, mutations, write_tiny_frames
 
 from iesm_agent.embeddings import HASH_SPACE, text_vectors
-from iesm_agent.frames import Frame, Intrinsics, SceneMeta, Segmentation, write_frame, write_frame_set
-
-H, W = 12, 16
 
 
 @pytest.fixture(scope="module")
 def base_frames(tmp_path_factory):
-    """Two tiny valid frames with hash-space embeddings (build-map accepts them)."""
-    d = tmp_path_factory.mktemp("frames")
-    emb, _ = text_vectors(["chair", "table"], HASH_SPACE)
-    write_frame_set(d, SceneMeta(scene_id="fz", n_frames=2, embedding_space=HASH_SPACE, categories=["chair", "table"]),
-                    Intrinsics(width=W, height=H, fx=8.0, fy=8.0, cx=7.5, cy=5.5))
-    for i in range(2):
-        masks = np.zeros((2, H, W), bool)
-        masks[0, 2:8, 3:9] = True
-        masks[1, 7:, 8:] = True
-        pose = np.eye(4)
-        pose[:3, 3] = [0.1 * i, 0.0, 1.2]
-        write_frame(d, Frame(index=i, rgb=np.full((H, W, 3), 120, np.uint8), depth=np.full((H, W), 2.0, np.float32),
-                             pose=pose, segmentation=Segmentation(masks, emb, np.array([0.9, 0.8], np.float32))))
-    return d
+    return write_tiny_frames(tmp_path_factory.mktemp("frames"))
 
 
 def _npz(arrays: dict[str, np.ndarray], allow_pickle: bool = False) -> bytes:

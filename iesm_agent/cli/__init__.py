@@ -82,7 +82,7 @@ def run(argv: list[str] | None = None) -> int:
     """Run one `iesm` command line in this process and return its exit status: user errors
     become one line on stderr and status 2."""
     try:
-        status = app(args=argv, standalone_mode=False)  # a command's typer.Exit code, or None
+        status = app(args=argv, standalone_mode=False, prog_name="iesm")  # a command's typer.Exit code, or None
     except IesmError as exc:
         print(f"iesm: error: {exc}", file=sys.stderr)
         return 2
