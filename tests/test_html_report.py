@@ -1,7 +1,8 @@
 """The HTML report (`iesm eval` / `iesm report`) and the map viewer (`iesm view`).
 
 Two modes. Headless Chromium, when installed (`make test` installs Debian's `chromium` when it
-can; `IESM_CHROMIUM` names another binary), opens the pages of the demo run, writes a
+can; `IESM_CHROMIUM` names another binary, `IESM_CHROMIUM=none` acts as if there were none),
+opens the pages of the demo run, writes a
 screenshot of each and checks the DOM after the scripts ran: rows present, filters from the URL
 hash change the row count, an opened query shows its experts and map, hostile text stays text.
 Without a browser those tests are skipped (the reason says so) and the static checks still run:
@@ -135,9 +136,9 @@ def hostile(tmp_path_factory):
 
 
 def find_browser() -> str | None:
-    named = os.environ.get("IESM_CHROMIUM")
+    named = os.environ.get("IESM_CHROMIUM")  # "none": as if no browser were installed
     if named:
-        return shutil.which(named) or (named if Path(named).exists() else None)
+        return None if named == "none" else shutil.which(named)
     return next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
 
 
