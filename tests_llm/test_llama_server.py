@@ -24,6 +24,10 @@ from iesm_agent.store import MapStore, open_map
 
 from .conftest import N_CTX
 
+# two shared cores evaluate 45-70 prompt tokens/s: one MTEFR query (six calls, one at a time
+# on the server) takes minutes, past the project's 300 s default per test
+pytestmark = pytest.mark.timeout(1800)
+
 PROMPT = [Message(role="system", content="You answer with JSON only."),
           Message(role="user", content='Candidates: {"id": 3, "label": "bed"} {"id": 7, "label": "sofa"}. '
                                        'Where can I sleep? Reply {"ranked_instance_ids": [ids, best first]}.')]
