@@ -242,7 +242,10 @@
     if (q !== null) {
       const v = params.get("qv");
       const i = records.findIndex((r) => r.id === q && (!v || r.variant === v));
-      if (i >= 0) open(i, false);
+      if (i >= 0) {
+        open(i, false);
+        document.getElementById("queries").scrollIntoView();  // a link to a query shows it
+      }
     }
   }
   window.addEventListener("hashchange", () => { if (location.hash.includes("=")) load(); });
