@@ -44,7 +44,11 @@ def test_baseline_rooms_are_label_components():
     gt = np.array([[0, 0, 0, 1, 1, 1]])
     labels = CellLabels(np.array([[0, 1, 0, 1, 1, -1]]), ["kitchen", "bedroom"])
     got = baseline_scores(labels, gt, {0: "kitchen", 1: "bedroom"})
-    assert got["rooms_pred"] == 4 and got["acc"] == pytest.approx(4 / 6)
+    # scored on the cells the labels cover (the unlabelled one is not charged) ...
+    assert got["rooms_pred"] == 4 and got["acc"] == pytest.approx(4 / 5) and got["cells"] == 5
+    # ... unless the evaluated cells are given
+    every = baseline_scores(labels, gt, {0: "kitchen", 1: "bedroom"}, np.ones_like(gt, bool))
+    assert every["acc"] == pytest.approx(4 / 6) and every["cells"] == 6
 
 
 def test_resample_between_grids():
