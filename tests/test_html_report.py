@@ -408,3 +408,14 @@ def test_hostile_text_stays_text_in_chromium(hostile, tmp_path):
     root = dom(chromium(tmp_path, view.resolve().as_uri() + "#id=1"))
     assert len(root.all("script")) == 2
     assert HOSTILE in root.one("section", id="info").text()
+
+
+def test_eval_writes_its_results_when_the_page_is_over_its_bound(hostile, tmp_path, monkeypatch, capsys):
+    import iesm_agent.evals.html.run_data as run_data
+
+    monkeypatch.setattr(run_data, "MAX_PAGE_BYTES", 1000)
+    out = tmp_path / "run"
+    assert run(["eval", str(hostile["suite"]), "-m", "keyword", "-o", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "iesm: warning: report.html not written" in err and "over the" in err
+    assert (out / "report.md").exists() and (out / "summary.json").exists() and not (out / "report.html").exists()

@@ -4,6 +4,7 @@ paired significance) and a PNG bar chart of O-SR by type per variant."""
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 from typing import Sequence
 
@@ -139,4 +140,7 @@ def write_outputs(run_dir: Path, summary: dict) -> None:
     plotted = bool(summary["types"]) and plot_osr(summary, run_dir / PLOT)
     write_text(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")
     write_text(run_dir / "report.md", render_markdown(summary, PLOT if plotted else None))
-    write_report([run_dir], run_dir / REPORT)
+    try:  # the run's results stand without the page: a page that cannot be written is a warning
+        write_report([run_dir], run_dir / REPORT)
+    except IesmError as exc:
+        print(f"iesm: warning: {REPORT} not written: {exc}", file=sys.stderr)
