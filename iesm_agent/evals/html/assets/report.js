@@ -204,7 +204,7 @@
     for (const tr of rows) {
       const on = +tr.dataset.key === i;
       tr.classList.toggle("open", on);
-      tr.setAttribute("aria-selected", on ? "true" : "false");
+      if (on) tr.setAttribute("aria-current", "true"); else tr.removeAttribute("aria-current");
     }
     document.body.dataset.open = `${r.variant} ${r.id}`;
     const params = hashParams();
