@@ -121,3 +121,25 @@ def test_landmark_attributes_stay_with_the_landmark():
 def test_gerunds_after_a_preposition_are_functions_participles_after_a_noun_are_verbs():
     assert analyse_query("something meant for sleeping in the bedroom").afford
     assert parse_query("the cup resting on the shelf").target[0] == "cup"
+
+
+def test_a_landmark_the_lexicon_does_not_know_makes_the_spatial_expert_abstain(retriever):
+    assert parse_query("the picture above the flurbish").unknown_landmark
+    assert not parse_query("the lamp on the far left").unknown_landmark
+    res = retriever.ask("the picture hanging above the flurbish")
+    assert res.experts.get("spatial", []) == [] and "spatial" in res.abstained
+
+
+def test_landmark_colours_are_read_across_colour_suffixes():
+    (rel,) = parse_query("the mug on the cream-coloured desk").relations
+    assert rel.landmarks == [("desk",)] and [k for attrs in rel.landmark_attrs for k, _ in attrs] == ["color"]
+
+
+def test_a_room_word_before_another_noun_is_that_nouns_room():
+    assert analyse_query("a box for the kitchen scraps").rooms == {}
+    assert "office" in analyse_query("the office bookcase").rooms
+    assert "bedroom" in analyse_query("a book in the bedroom, bound in cloth").rooms
+
+
+def test_plurals_in_ves_read_as_their_noun():
+    assert parse_query("the plant near the bookshelves").relations[0].landmarks == [("bookshelf",)]

@@ -224,6 +224,8 @@ _OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short":
 
 def _guess_lemma(token: str, vocab: frozenset[str]) -> str:
     candidates: list[str] = []
+    if token.endswith("ves") and len(token) > 4:  # "bookshelves" -> bookshelf, "knives" -> knife
+        candidates += [token[:-3] + "f", token[:-3] + "fe"]
     if token.endswith("ies") and len(token) > 4:
         candidates.append(token[:-3] + "y")
     if token.endswith("es") and len(token) > 3:

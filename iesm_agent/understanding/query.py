@@ -83,6 +83,22 @@ _CONJUNCTIONS = frozenset({"and", "or", "nor", "plus"})
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
 
 
+def _names_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], head: Span | None) -> bool:
+    """A room word directly before a noun other than the target's ("the office papers") modifies
+    that noun; before the target ("the office bookcase") it says where the target is."""
+    nxt = span.end
+    if nxt >= len(lemmas) or (head is not None and nxt == head.start):
+        return False
+    if span.start > 0 and lemmas[span.start - 1] in _PLACE_PREPOSITIONS | {"at"}:
+        return False  # "in the bedroom, bound in leather": a place phrase names the target's room
+    if nxt in covered:  # another category, unless it leads to the target ("the bathroom sink cabinet")
+        other = next((sp for sp in lex.scan(lemmas[nxt:nxt + lex.max_len]) if sp.start == 0 and sp.has("cat")), None)
+        return other is not None and not (head is not None and nxt + other.end == head.start)
+    word = lemmas[nxt]
+    stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
+    return word.isalpha() and len(word) > 2 and word not in stop
+
+
 def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], end: int) -> bool:
     """An attribute outside the target phrase directly before another noun describes that noun,
     not the target: a landmark ("beside the tall wardrobe") or a noun the lexicon does not know
@@ -234,6 +250,8 @@ def analyse_query(text: str) -> QueryInfo:
             _add_entry(afford, lex.generic[info.generic], 1.0)
             continue
         if s.has("room") and not (in_target and s.has("cat")):
+            if _names_other_noun(lex, lemmas, s, covered, head):
+                continue  # "a case for the office papers": the papers' room, not the target's
             for r in s.values("room"):
                 info.rooms[r] = 1.0
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])

@@ -74,6 +74,7 @@ class SpatialQuery:
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
+    unknown_landmark: bool = False  # a relation's landmark is a noun the lexicon does not know
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
 
     @property
@@ -98,10 +99,11 @@ def parse_query(text: str) -> SpatialQuery:
     used: set[int] = set()  # starts of cat spans taken as landmarks
 
     def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
-        """Attributes of the noun at `start`, read leftwards over attributes and comparatives
-        ("the green upper shelf": green)."""
+        """Attributes of the noun at `start`, read leftwards over attributes, colour suffixes and
+        comparatives ("the green upper shelf", "the cream-coloured desk")."""
         found, end = [], start
-        while end in attr_at or (end > 0 and toks[end - 1] in _EXTREMES):
+        suffixes = lex.words["color_suffixes"]
+        while end in attr_at or (end > 0 and (toks[end - 1] in _EXTREMES or toks[end - 1] in suffixes)):
             if end in attr_at:
                 s = attr_at[end]
                 found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
@@ -220,6 +222,8 @@ def parse_query(text: str) -> SpatialQuery:
         rel = Relation(kind)
         if kind in _LANDMARK_KINDS:
             if not landmark(rel, i):
+                if _unknown_noun_after(lex, toks, lemmas, i, cat_at):
+                    out.unknown_landmark = True  # "above the ottoman-thing": a landmark we cannot read
                 continue  # "the one on top", "over there": nothing to relate to
             if kind == "between":
                 landmark(rel, i)
@@ -252,3 +256,16 @@ def parse_query(text: str) -> SpatialQuery:
                       and not any(r.kind == "extreme" for r in out.relations)]
     return out
 
+
+
+def _unknown_noun_after(lex, toks: list[str], lemmas: list[str], i: int, cat_at: dict) -> bool:
+    """True when the words right after a relation cue (up to the next boundary word) hold a
+    content word that no lexicon phrase covers: a landmark the lexicon does not know."""
+    bounds, skip = lex.words["boundaries"], lex.words["skip"]
+    spatial_words = {w for cue in _CUES for w in cue} | set(_EXTREMES) | set(_ORDINALS) | {"far", "very", "just"}
+    for j in range(i, min(len(toks), i + 4)):
+        if j in cat_at or toks[j] in bounds or toks[j] in spatial_words:
+            return False
+        if toks[j] not in skip and toks[j].isalpha() and len(toks[j]) > 2 and not lex.scan([lemmas[j]]):
+            return True
+    return False
