@@ -49,7 +49,9 @@ def test_rooms_command_then_eval_section_then_path(built, tmp_path, capsys):
     assert sum(i.room_id is not None for i in scene.instances) > 0.8 * len(scene.instances)
     section = eval_section(scene, gt, frames)
     rooms, base = section["rooms"], section["rooms_baseline"]
-    assert rooms["acc"] > base["acc"] + 0.1 and rooms["miou"] > base["miou"] + 0.1
+    # the fair per-cell baseline sees every observed cell: ours is better on this scene, by less
+    # than against the old sampled baseline (per-seed figures: docs/results.md)
+    assert rooms["acc"] > base["acc"] and rooms["miou"] > base["miou"]
     assert rooms["recall"] > base["recall"] and 0 < rooms["precision"] <= 1
     # the unsegmented map is segmented on the fly with the same result
     assert eval_section(load_map(built_map), gt, frames)["rooms"] == pytest.approx(rooms)
