@@ -101,7 +101,8 @@ def test_iesm_ask_end_to_end(llama_server, tmp_path):
                 "--base-url", llama_server[0], "--json", env_extra={"IESM_CACHE_DIR": str(tmp_path)})
     assert proc.returncode in (0, 1), proc.stderr  # 1: the tiny model ranked nothing usable
     result = json.loads(proc.stdout)
-    assert result["calls"] and not any(c["failed"] for c in result["calls"]), proc.stderr
+    failed = [(c["name"], c.get("error")) for c in result["calls"] if c["failed"]]
+    assert result["calls"] and not failed, (failed, proc.stderr)
     assert "Traceback" not in proc.stderr
 
 

@@ -33,6 +33,8 @@ class CandidateViews:
     info: QueryInfo
     ids: tuple[int, ...]
     cache: dict[tuple[str, ...], dict[int, Fenced]] = field(default_factory=dict)
+    #: never shown as references (the candidates before a cut to the context window); default `ids`
+    not_references: tuple[int, ...] | None = None
     _built: dict[tuple[str, ...], FencedList] = field(default_factory=dict)
     _landmarks: tuple[int, ...] | None = None
 
@@ -51,7 +53,7 @@ class CandidateViews:
         """Views of the instances outside the candidates that the query names (spatial
         landmarks: `candidates.reference_ids`)."""
         if self._landmarks is None:
-            self._landmarks = reference_ids(self.store, self.info, self.ids)
+            self._landmarks = reference_ids(self.store, self.info, tuple(set(self.ids) | set(self.not_references or ())))
         return FencedList(Fenced(self.store.candidate_view(i, list(names))) for i in self._landmarks)
 
 

@@ -55,27 +55,30 @@ class Retriever:
         info = analyse_query(query)
         selected = select_candidates(self.store, query, info, self.config.max_candidates, target)
         candidates = await self._fit(query, info, selected, target)
-        outcome, session = await self._run(query, info, candidates)
+        outcome, session = await self._run(query, info, candidates, selected.ids)
         if session.overflowed and len(candidates.ids) > 1:
-            refit = await self._fit(query, info, candidates, target)
+            refit = await self._fit(query, info, candidates, target, selected.ids)
             if refit.ids != candidates.ids:
                 candidates = refit
-                outcome, session = await self._run(query, info, candidates)
+                outcome, session = await self._run(query, info, candidates, selected.ids)
         before = len(selected.ids) if candidates.ids != selected.ids else None
         result = self._result(query, outcome, session, candidates, target, started, before)
         result.load_ms = (load_seconds() - loaded_before) * 1000.0  # the encoder loaded for this query
         result.latency_ms -= result.load_ms
         return result
 
-    async def _run(self, query: str, info: QueryInfo, candidates: Candidates,
+    async def _run(self, query: str, info: QueryInfo, candidates: Candidates, selected: tuple[int, ...],
                    dry_run: bool = False) -> tuple[Outcome, Session]:
-        """Run the method over `candidates` (`dry_run`: render its prompts, send nothing)."""
+        """Run the method over `candidates` (`dry_run`: render its prompts, send nothing); the
+        instances `selected` before a cut to the context window are never shown as references,
+        so cutting the candidates always shrinks the prompts."""
         session = Session(self.model, self.prompts, self._template_hashes, dry_run=dry_run)
-        views = CandidateViews(self.store, info, candidates.ids, self._views)
+        views = CandidateViews(self.store, info, candidates.ids, self._views, not_references=selected)
         outcome = await self.runner.run(QueryContext(query, info, self.store, candidates, views, session, self.config))
         return outcome, session
 
-    async def _fit(self, query: str, info: QueryInfo, candidates: Candidates, target: int | None) -> Candidates:
+    async def _fit(self, query: str, info: QueryInfo, candidates: Candidates, target: int | None,
+                   selected: tuple[int, ...] | None = None) -> Candidates:
         """The longest prefix of `candidates` whose prompts all fit the model's prompt limit
         (estimated tokens); unchanged when the limit is unknown or it already fits. At least
         one candidate is kept: a prompt that cannot fit even then is refused by the model."""
@@ -84,7 +87,8 @@ class Retriever:
         if limit is None or self.method == "keyword":
             return candidates
         while len(ids) > 1:
-            _, dry = await self._run(query, info, Candidates(ids, candidates.considered), dry_run=True)
+            _, dry = await self._run(query, info, Candidates(ids, candidates.considered),
+                                     selected or candidates.ids, dry_run=True)
             need = max(dry.estimates, default=0)
             if need <= limit:
                 break
