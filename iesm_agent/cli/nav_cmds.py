@@ -117,5 +117,7 @@ def register(app: typer.Typer) -> None:
                        f"straight legs; stops {result.goal_distance_m:.2f} m from it")
         else:
             typer.echo(f"not reachable ({result.status}): {result.message}")
+        if not as_json:
+            typer.echo(f"walls: {result.walls}")
         if not result.reachable:
             raise typer.Exit(1)

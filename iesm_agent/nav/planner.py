@@ -10,6 +10,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from .obstacles import ObstacleConfig, inflate, obstacle_map
+from .walls import map_walls
 from ..store.model import GridSpec, SceneMap
 
 Status = Literal["ok", "unknown_instance", "start_outside_map", "start_in_obstacle", "no_free_space",
@@ -20,7 +21,9 @@ class PathResult(BaseModel):
     """Outcome of one plan. `reachable` is True only for status "ok"; `waypoints` are (x, y) in
     metres from start to goal (line-of-sight shortened); `length_m` their Euclidean length;
     `goal_cell` (row, col) the free cell chosen next to the instance; `goal_distance_m` its distance
-    to the instance's nearest cell; `message` says why when not reachable."""
+    to the instance's nearest cell; `message` says why when not reachable; `walls` where the walls
+    planned around came from (the map's wall instances, its room polygons with door gaps, or
+    "none: ..." when the path ignores walls)."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -33,13 +36,16 @@ class PathResult(BaseModel):
     waypoints: list[tuple[float, float]] = Field(default_factory=list)
     goal_cell: Optional[tuple[int, int]] = None
     goal_distance_m: Optional[float] = None
+    walls: str = ""
 
 
 class PlanningGrid:
     """The inflated obstacle grid of one map, prepared once for many plans.
 
     `blocked` (H, W) bool: obstacle cells grown by the robot radius; `obstacles` (H, W) bool the
-    obstacle cells themselves (the map's stored obstacle map, else computed from its instances).
+    obstacle cells themselves (the map's stored obstacle map, else computed from its instances)
+    plus, for a map with room polygons but no wall instances, the walls drawn from the polygons
+    (`walls.map_walls`; `self.walls` says which).
     A goal counts as reachable when a reachable free cell lies within `max_goal_distance` m of the
     instance (the N-SR radius).
     """
@@ -49,7 +55,9 @@ class PlanningGrid:
         self.max_goal_distance = max_goal_distance
         self.grid: GridSpec = scene.grid
         self.config = config
-        self.obstacles = scene.obstacles if scene.obstacles is not None else obstacle_map(scene, config)
+        obstacles = scene.obstacles if scene.obstacles is not None else obstacle_map(scene, config)
+        self.walls = map_walls(scene, obstacles, config.robot_radius)
+        self.obstacles = obstacles | self.walls.cells
         self.blocked = inflate(self.obstacles, config.robot_radius, scene.grid.cell_size)
         self.weights = np.where(self.blocked, np.inf, 1.0).astype(np.float32)
         self._ids = {inst.id for inst in scene.instances}
@@ -72,7 +80,8 @@ class PlanningGrid:
         start = (float(start_xy[0]), float(start_xy[1]))
 
         def fail(status: Status, message: str) -> PathResult:
-            return PathResult(status=status, reachable=False, message=message, instance_id=instance_id, start=start)
+            return PathResult(status=status, reachable=False, message=message, instance_id=instance_id, start=start,
+                              walls=self.walls.description)
 
         if instance_id not in self._ids:
             return fail("unknown_instance", f"no instance with id {instance_id} in map {self.scene.scene_id}")
@@ -121,7 +130,8 @@ class PlanningGrid:
         length = float(np.hypot(*np.diff(points, axis=0).T).sum()) if len(points) > 1 else 0.0
         return PathResult(status="ok", reachable=True, instance_id=instance_id, start=start, length_m=length,
                           waypoints=[(round(x, 4), round(y, 4)) for x, y in waypoints],
-                          goal_cell=(int(goal[0]), int(goal[1])), goal_distance_m=best * s)
+                          goal_cell=(int(goal[0]), int(goal[1])), goal_distance_m=best * s,
+                          walls=self.walls.description)
 
 
 def line_of_sight(a: np.ndarray, b: np.ndarray, blocked: np.ndarray) -> bool:

@@ -31,6 +31,10 @@ def render_path(planning: PlanningGrid, result: PathResult, path: str | Path, dp
     ax.plot(*result.start, "o", color="tab:blue", markersize=8)
     title = (f"to instance {result.instance_id}: {result.length_m:.2f} m" if result.reachable
              else f"to instance {result.instance_id}: {result.message}")
+    if planning.walls.source == "none":
+        title += "\n(the path ignores walls: the map has none)"
+    elif planning.walls.source == "room polygons":
+        title += f"\n(walls from the room polygons, {len(planning.walls.doors)} doors)"
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")

@@ -207,7 +207,8 @@ class MapService:
 
         Returns status ("ok", "unreachable", "start_outside_map", "start_in_obstacle", ...),
         reachable, length_m and the waypoints [x, y] in metres from the start to a free cell
-        next to the instance.
+        next to the instance, and walls: where the walls planned around came from ("none: ..."
+        when the map has no walls or room polygons and the path ignores walls).
 
         Args:
             instance_id: the goal instance id (e.g. find_goal's instance_id)

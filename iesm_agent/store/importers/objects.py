@@ -4,6 +4,8 @@ Each box footprint is rasterised into the 2.5D grid (every cell whose centre lie
 footprint, at least the cell holding the box centre); per-cell top = center_z + dz / 2 (m),
 mean_height = center_z (m). Grid bounds = union of boxes (and room polygons) + `MARGIN`.
 `room_map` comes from room polygons when any are given, else it is left at -1 everywhere.
+Optional `doors` ([x, y] position and width, m) are kept in `meta["doors"]` (JSON) for the planner,
+which draws walls along the room polygons with gaps at the doors (`nav.walls`).
 Missing captions are built from the known attributes (see `build_caption`).
 """
 
@@ -11,6 +13,8 @@ from __future__ import annotations
 
 from pathlib import Path
 from typing import Annotated, Optional, Union
+
+import json
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
@@ -58,6 +62,15 @@ class ObjectSpec(BaseModel):
     on: Optional[Id] = None  # id of the instance this one stands on
 
 
+class DoorSpec(BaseModel):
+    """A doorway in the room polygons' walls: `position` [x, y] (m) on a wall, clear `width` (m)."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    position: tuple[Metres, Metres]
+    width: Annotated[float, Field(gt=0, le=100)] = 0.9
+
+
 class ObjectList(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
@@ -65,6 +78,7 @@ class ObjectList(BaseModel):
     source: str = ""
     comment: str = ""
     rooms: Optional[list[RoomSpec]] = None
+    doors: Optional[list[DoorSpec]] = None
     objects: list[ObjectSpec]
 
 
@@ -225,5 +239,10 @@ def import_objects(path: str | Path, cell_size: float = 0.05) -> SceneMap:
     occupancy = (InstanceGrid.from_entries(np.concatenate(cells_all), np.concatenate(ids_all),
                                            np.concatenate(tops_all)) if instances else InstanceGrid.empty())
     meta = {"comment": spec.comment} if spec.comment else {}
+    if spec.doors is not None:
+        if not any(room.polygon for room in spec.rooms or []):
+            raise MapFormatError("doors are gaps in the walls of room polygons, but no room has a polygon",
+                                 path, "doors")
+        meta["doors"] = json.dumps([{"position": list(d.position), "width": d.width} for d in spec.doors])
     return SceneMap(scene_id=spec.scene_id, source=spec.source or f"objects:{path.name}", grid=grid,
                     instances=instances, rooms=rooms, occupancy=occupancy, room_map=room_map, meta=meta)
