@@ -143,3 +143,15 @@ def test_a_room_word_before_another_noun_is_that_nouns_room():
 
 def test_plurals_in_ves_read_as_their_noun():
     assert parse_query("the plant near the bookshelves").relations[0].landmarks == [("bookshelf",)]
+
+
+def test_a_part_of_the_target_is_no_landmark():
+    assert parse_query("the vase with a cracked top").relations == []
+    assert parse_query("the clock with silver on its frame").relations == []
+    assert parse_query("the shelf with the plant on it").relations[0].landmarks == [("plant",)]
+
+
+def test_what_the_target_is_for_is_not_the_target():
+    sq = parse_query("the small cloth for the glasses, on the desk")
+    assert "glasses" not in " ".join(sq.target)
+    assert parse_query("a cover for the sofa").target[0] == "cover"

@@ -220,6 +220,11 @@ def parse_query(text: str) -> SpatialQuery:
             out.relations.append(rel)
             continue
         rel = Relation(kind)
+        if kind in _LANDMARK_KINDS:  # "with a gold frame", "gold on its frame": a part of the target
+            j = next_cat(i)
+            if j is not None and set(lemmas[cat_at[j].start:cat_at[j].end]) <= lex.words["weak_heads"]:
+                used.add(j)
+                continue
         if kind in _LANDMARK_KINDS:
             if not landmark(rel, i):
                 if _unknown_noun_after(lex, toks, lemmas, i, cat_at):
@@ -231,7 +236,11 @@ def parse_query(text: str) -> SpatialQuery:
     for k in negated:
         if k < len(out.relations):
             out.relations[k].negated = True
+    # the target is the first category left, unless it only says what the target is for
+    # ("the handheld for the telly"): then there is no named target
     target = next((j for j in sorted(cat_at) if j not in used), None)
+    if target is not None and target > 0 and toks[target - 1] == "for":
+        target = None
     info = analyse_query(text)
     if target is None and not info.unknown_target and not _TARGET_PRONOUNS & set(toks) and out.relations:
         # a relation needs a target and a distinct landmark: when the only thing named was read as
