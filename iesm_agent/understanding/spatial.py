@@ -220,7 +220,7 @@ def parse_query(text: str) -> SpatialQuery:
             out.relations.append(rel)
             continue
         rel = Relation(kind)
-        if kind in _LANDMARK_KINDS:  # "with a gold frame", "gold on its frame": a part of the target
+        if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = next_cat(i)
             if j is not None and set(lemmas[cat_at[j].start:cat_at[j].end]) <= lex.words["weak_heads"]:
                 used.add(j)
@@ -237,7 +237,7 @@ def parse_query(text: str) -> SpatialQuery:
         if k < len(out.relations):
             out.relations[k].negated = True
     # the target is the first category left, unless it only says what the target is for
-    # ("the handheld for the telly"): then there is no named target
+    # ("the cloth for the glasses"): then there is no named target
     target = next((j for j in sorted(cat_at) if j not in used), None)
     if target is not None and target > 0 and toks[target - 1] == "for":
         target = None
