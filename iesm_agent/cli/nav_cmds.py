@@ -52,7 +52,11 @@ def register(app: typer.Typer) -> None:
         map_path: Path = typer.Argument(..., metavar="MAP", help="a built .iesm map (iesm build-map)"),
         output: Path = typer.Option(..., "-o", "--output", help="the .iesm file to write (may be MAP)"),
         frames: Optional[Path] = typer.Option(None, "--frames",
-                                              help="simulator frame directory: simulated CLIP-like per-cell labels"),
+                                              help="frame directory the map was built from (labels: --room-labels)"),
+        room_labels: Optional[str] = typer.Option(
+            None, "--room-labels", metavar="sim|clip",
+            help="with --frames: 'sim' simulated CLIP-like labels from the simulator's ground truth (default), "
+                 "'clip' CLIP frame features against room embeddings (iesm segment --segmenter sam-clip)"),
         cell_labels: Optional[Path] = typer.Option(None, "--cell-labels",
                                                    help=".npz with per-cell labels (H, W) and names (real data)"),
         split: bool = typer.Option(True, "--split/--no-split", help="contextual split of open-plan space"),
@@ -66,10 +70,22 @@ def register(app: typer.Typer) -> None:
 
         if (frames is None) == (cell_labels is None):
             raise IesmError("give exactly one of --frames DIR or --cell-labels FILE.npz", None, "rooms")
+        if room_labels not in (None, "sim", "clip"):
+            raise IesmError(f"expected sim or clip, got {room_labels!r}", None, "--room-labels")
+        if room_labels is not None and frames is None:
+            raise IesmError("--room-labels chooses how --frames DIR is read; give --frames DIR", None,
+                            "--room-labels")
         if not output.parent.resolve().is_dir():
             raise IesmError("output directory does not exist", output)
+        clip = None
+        if frames is not None and room_labels == "clip":
+            from ..rooms.clip_labels import ClipFrameLabels
+
+            clip = ClipFrameLabels(frames)  # checks the directory before the map is read
         scene = open_map(map_path)
-        if frames is not None:
+        if clip is not None:
+            labels = clip.cell_labels(scene.grid)
+        elif frames is not None:
             from ..sim.room_labels import ViewpointLabels
 
             labels = ViewpointLabels(frames, seed=seed).cell_labels(scene.grid)

@@ -32,6 +32,15 @@ class CellLabels:
         return cls(labels.reshape(shape), list(names))
 
 
+def flat_cells(points_xy: np.ndarray, grid: GridSpec) -> np.ndarray:
+    """(M,) flat cell index (row * width + col) of each (x, y) point in metres of (M, 2)
+    `points_xy`, -1 for points outside the grid."""
+    col = np.floor((points_xy[:, 0] - grid.origin[0]) / grid.cell_size).astype(np.int64)
+    row = np.floor((points_xy[:, 1] - grid.origin[1]) / grid.cell_size).astype(np.int64)
+    inside = (row >= 0) & (row < grid.height) & (col >= 0) & (col < grid.width)
+    return np.where(inside, row * grid.width + col, -1)
+
+
 class CellLabelSource(Protocol):
     """Gives each observed cell of `grid` a room type (e.g. CLIP similarity of the pixels that
     project there against room-type prompts, majority-voted over frames)."""
