@@ -20,16 +20,8 @@ from ..errors import IesmError
 from ..frames import FrameSet
 from ..mapping.project import world_points
 from ..store.model import GridSpec
-from ..rooms.labels import CellLabels
+from ..rooms.labels import CellLabels, flat_cells
 from .ground_truth import GroundTruth
-
-
-def _cells(points_xy: np.ndarray, grid: GridSpec) -> np.ndarray:
-    """(M,) flat cell index of each (x, y) point, -1 outside the grid."""
-    col = np.floor((points_xy[:, 0] - grid.origin[0]) / grid.cell_size).astype(np.int64)
-    row = np.floor((points_xy[:, 1] - grid.origin[1]) / grid.cell_size).astype(np.int64)
-    ok = (row >= 0) & (row < grid.height) & (col >= 0) & (col < grid.width)
-    return np.where(ok, row * grid.width + col, -1)
 
 
 def _similar_types(names: list[str]) -> list[np.ndarray]:
@@ -77,13 +69,13 @@ class ViewpointLabels:
             pixels = sampled[frame.depth.ravel()[sampled] > 0]
             points = world_points(frame.depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose).T  # (M, 3)
             points = points[points[:, 2] < self.max_height]
-            camera_cell = _cells(frame.pose[None, :2, 3], self.gt.grid)[0]
+            camera_cell = flat_cells(frame.pose[None, :2, 3], self.gt.grid)[0]
             camera_type = room_type[gt_rooms[camera_cell]] if camera_cell >= 0 else -1
             if camera_type < 0 or len(points) == 0:
                 continue
             camera_room = gt_rooms[camera_cell]
             read_as = int(rng.choice(similar[camera_type])) if rng.random() < self.p_confuse else camera_type
-            gt_cell = _cells(points[:, :2], self.gt.grid)
+            gt_cell = flat_cells(points[:, :2], self.gt.grid)
             point_room = np.where(gt_cell >= 0, gt_rooms[np.maximum(gt_cell, 0)], -1)
             # per room seen in this view: recognised as itself, or read as the camera's room
             rooms_seen = np.unique(point_room[(point_room >= 0) & (point_room != camera_room)])
@@ -92,7 +84,7 @@ class ViewpointLabels:
             label = np.where(np.isin(point_room, recognised) & (content >= 0), content, read_as)
             noisy = rng.random(len(points)) < self.p_noise
             label[noisy] = rng.integers(0, n_labels, int(noisy.sum()))
-            cell = _cells(points[:, :2], grid)
+            cell = flat_cells(points[:, :2], grid)
             codes.append(cell[cell >= 0] * n_labels + label[cell >= 0])
         all_codes = np.concatenate(codes) if codes else np.zeros(0, np.int64)
         return CellLabels.from_votes(all_codes, (grid.height, grid.width), self.names)
