@@ -59,3 +59,11 @@ def test_ask_errors_are_one_line(monkeypatch, capsys, args, message):
         main()
     err = capsys.readouterr().err
     assert exit_info.value.code == 2 and message in err and err.count("\n") == 1
+
+
+def test_an_empty_query_is_refused_in_one_line(capsys):
+    from iesm_agent.cli import run
+
+    assert run(["ask", "apartment", "   "]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["iesm: error: query: the query is empty"]

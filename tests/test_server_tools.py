@@ -11,7 +11,8 @@ from iesm_agent.cli import run
 from iesm_agent.errors import IesmError
 from iesm_agent.retrieval import Retriever
 from iesm_agent.server import MapService, format_specs, tool_specs
-from iesm_agent.server.tools import MAX_QUERY_CHARS
+from iesm_agent.retrieval.retriever import MAX_QUERY_CHARS
+from iesm_agent.server.tools import MAX_ARGUMENT_CHARS
 from iesm_agent.store import MapStore
 from iesm_agent.store import mapstore as mapstore_module
 
@@ -113,7 +114,7 @@ def test_retrievers_stay_warm_per_map_method_provider(service):
 
 
 def test_long_text_arguments_of_store_tools_are_refused(service):
-    with pytest.raises(IesmError, match=f"text: 100000 characters; at most {MAX_QUERY_CHARS}"):
+    with pytest.raises(IesmError, match=f"text: 100000 characters; at most {MAX_ARGUMENT_CHARS}"):
         asyncio.run(service.call_tool("find_instances", {"text": "lamp " * 20_000}))
     assert asyncio.run(service.call_tool("find_instances", {"text": "lamp"}))[0]["label"] == "lamp"
 

@@ -33,7 +33,9 @@ def ask_command(
     from ..config import load_settings
     from ..providers import get_model
     from ..retrieval import Retriever
+    from ..retrieval.retriever import check_query
 
+    check_query(query)
     store = open_store(map_ref)
     config = load_settings(None, {"retrieval.kappa": kappa} if kappa is not None else {}).retrieval
     model = get_model(provider, base_url=base_url, cache=not no_cache)

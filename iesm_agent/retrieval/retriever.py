@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..config import RetrievalConfig
+from ..errors import IesmError
 from ..embeddings import load_seconds
 from ..prompting import Fenced, PromptLibrary
 from ..providers import Model, get_model
@@ -27,6 +28,19 @@ from .result import RetrievalResult
 
 #: ids whose display names a result carries besides the experts' picks
 _NAMED_TOP = 5
+#: the longest query accepted, in characters
+MAX_QUERY_CHARS = 2000
+
+
+def check_query(query: str) -> str:
+    """`query` when it is a usable request; an empty or over-long one is an `IesmError` naming
+    the argument (the CLI and the server refuse it before any model call)."""
+    if not query.strip():
+        raise IesmError("the query is empty", None, "query")
+    if len(query) > MAX_QUERY_CHARS:
+        raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
+                        None, "query")
+    return query
 
 
 class Retriever:

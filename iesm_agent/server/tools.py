@@ -34,7 +34,8 @@ from .results import FindGoalResult, Ranked, argument_problem, place
 from .workers import OffLoopModel, WorkerPool
 
 #: longest query (or other text argument) a tool accepts, in characters
-MAX_QUERY_CHARS = 2000
+#: the longest text argument a map tool accepts, in characters
+MAX_ARGUMENT_CHARS = 2000
 #: ids of the top of the fused ranking find_goal reports
 RANKING_SHOWN = 5
 SPEC_FORMATS = ("json", "openai", "mcp")
@@ -168,11 +169,9 @@ class MapService:
             method: mtefr, spr, keyword or experts:<name>,<name>
             provider: model spec (default: the server's first enabled provider)
         """
-        if not query.strip():
-            raise IesmError("the query is empty", None, "query")
-        if len(query) > MAX_QUERY_CHARS:
-            raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
-                            None, "query")
+        from ..retrieval.retriever import check_query
+
+        check_query(query)
         retriever = self.retriever(map, method, provider)
         if isinstance(retriever.model, OffLoopModel):
             async with self._admission():  # first come, first served on the worker pool
@@ -242,8 +241,8 @@ class MapService:
         async def tool(**arguments: Any) -> Any:
             store = self.store(arguments.pop("map", None))
             for arg, value in arguments.items():
-                if isinstance(value, str) and len(value) > MAX_QUERY_CHARS:
-                    raise IesmError(f"{len(value)} characters; at most {MAX_QUERY_CHARS} are accepted", None, arg)
+                if isinstance(value, str) and len(value) > MAX_ARGUMENT_CHARS:
+                    raise IesmError(f"{len(value)} characters; at most {MAX_ARGUMENT_CHARS} are accepted", None, arg)
             return getattr(store, name)(**arguments)
 
         tool.__name__ = tool.__qualname__ = name
