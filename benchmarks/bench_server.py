@@ -10,6 +10,11 @@ Targets (DESIGN.md, issue 23): find_goal on a warm server p50 <= 20 ms; 40 concu
 p50 <= 30 ms and no failure. For scale, the same burst of `list_maps` (no retrieval: the MCP
 transport, client and server alone on the same cores) is measured too.
 
+The client is this process and the server another, but both share the machine's cores: the
+CPU each spends during a burst (server: user + system time from /proc/<pid>/stat, Linux only;
+client: this process's `time.process_time()`) is reported per call, so a burst's latency can be
+read against the work it took on each side.
+
 Run: .venv/bin/python benchmarks/bench_server.py [--concurrent 40]
 """
 
@@ -73,19 +78,30 @@ async def timed_call(client, query: str) -> tuple[float, bool]:
     return (time.perf_counter() - t0) * 1000.0, failed
 
 
-async def measure(url: str, sequential: list[str], concurrent: list[str]) -> dict[str, object]:
+def process_cpu_s(pid: int) -> float | None:
+    """User + system CPU seconds process `pid` has used so far (Linux /proc; None elsewhere)."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
+    except OSError:
+        return None
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime (ticks)
+
+
+async def measure(url: str, server_pid: int, sequential: list[str], concurrent: list[str]) -> dict[str, object]:
     from mcp import Client
 
     async with Client(url) as client:
         first = [await timed_call(client, q) for q in sequential]
         repeat = [await timed_call(client, q) for q in sequential]
         ask_warm = statistics.median([(await timed_call(client, ASK_QUERY))[0] for _ in range(5)])
-        t0 = time.perf_counter()
+        server0, client0, t0 = process_cpu_s(server_pid), time.process_time(), time.perf_counter()
         burst = await asyncio.gather(*(timed_call(client, q) for q in concurrent))
         wall = time.perf_counter() - t0
+        server1, client1 = process_cpu_s(server_pid), time.process_time()
         floor = await asyncio.gather(*(timed_list_maps(client) for _ in concurrent))
+    server_cpu = None if server0 is None or server1 is None else server1 - server0
     return {"first": first, "repeat": repeat, "burst": burst, "burst_wall_s": wall, "ask_warm_ms": ask_warm,
-            "floor": floor}
+            "floor": floor, "burst_server_cpu_s": server_cpu, "burst_client_cpu_s": client1 - client0}
 
 
 async def timed_list_maps(client) -> float:
@@ -110,7 +126,7 @@ def run_config(env: dict[str, str], sequential: list[str], concurrent: list[str]
     """Start a server with `env`, measure, stop it, time `iesm ask` cold; the figures, printed too."""
     proc, url, startup_s = start_server(env)
     try:
-        m = asyncio.run(measure(url, sequential, concurrent))
+        m = asyncio.run(measure(url, proc.pid, sequential, concurrent))
     finally:
         proc.terminate()
         proc.wait(timeout=30)
@@ -123,7 +139,10 @@ def run_config(env: dict[str, str], sequential: list[str], concurrent: list[str]
            "burst_wall_s": m["burst_wall_s"], "throughput": len(burst_ms) / m["burst_wall_s"],
            "burst_p50": statistics.median(burst_ms), "burst_p95": percentile(burst_ms, 0.95),
            "burst_failures": sum(failed for _, failed in m["burst"]), "burst_n": len(burst_ms),
-           "warm_ms": m["ask_warm_ms"], "cold_ms": cold_ms, "floor_p50": statistics.median(m["floor"])}
+           "warm_ms": m["ask_warm_ms"], "cold_ms": cold_ms, "floor_p50": statistics.median(m["floor"]),
+           "burst_client_cpu_ms": m["burst_client_cpu_s"] * 1000 / len(burst_ms),
+           "burst_server_cpu_ms": (None if m["burst_server_cpu_s"] is None
+                                   else m["burst_server_cpu_s"] * 1000 / len(burst_ms))}
     print(f"  server start-up (maps, model, warm-up query): {out['startup_s']:.2f} s")
     print(f"  find_goal, {len(first_ms)} queries one by one, first time: p50 {out['p50_first']:.1f} ms, "
           f"p95 {out['p95_first']:.1f} ms")
@@ -131,6 +150,8 @@ def run_config(env: dict[str, str], sequential: list[str], concurrent: list[str]
     print(f"  {out['burst_n']} concurrent find_goal calls: {out['burst_wall_s']:.2f} s wall, "
           f"{out['throughput']:.1f} calls/s, p50 {out['burst_p50']:.1f} ms, p95 {out['burst_p95']:.1f} ms, "
           f"{out['burst_failures']} failures (the same burst of list_maps: p50 {out['floor_p50']:.1f} ms)")
+    server_cpu = "?" if out["burst_server_cpu_ms"] is None else f"{out['burst_server_cpu_ms']:.1f}"
+    print(f"  CPU per call during that burst: server {server_cpu} ms, client {out['burst_client_cpu_ms']:.1f} ms")
     print(f"  '{ASK_QUERY}': warm server {out['warm_ms']:.1f} ms vs iesm ask in a fresh process "
           f"{cold_ms:.0f} ms ({cold_ms / out['warm_ms']:.0f}x)")
     return out
@@ -162,7 +183,9 @@ def main() -> None:
     record("serve_40_concurrent_p50_ms", full["burst_p50"], "ms", "<= 30 ms", full["burst_p50"] <= 30,
            note=f"{full['burst_n']} find_goal calls at once, client and server on this machine's cores; the same "
                 f"burst of list_maps (no retrieval) p50 {full['floor_p50']:.0f} ms; lexicons only p50 "
-                f"{lex['burst_p50']:.0f} ms")
+                f"{lex['burst_p50']:.0f} ms; CPU per call: server "
+                f"{'?' if full['burst_server_cpu_ms'] is None else format(full['burst_server_cpu_ms'], '.1f')} ms, "
+                f"client {full['burst_client_cpu_ms']:.1f} ms")
     record("serve_vs_ask_cold_speedup", full["cold_ms"] / full["warm_ms"], "x", "reported", True,
            note=f"warm find_goal {full['warm_ms']:.1f} ms vs fresh iesm ask {full['cold_ms']:.0f} ms; lexicons only "
                 f"{lex['warm_ms']:.1f} ms vs {lex['cold_ms']:.0f} ms")

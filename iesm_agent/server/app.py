@@ -84,7 +84,7 @@ def _as_mcp_tool(fn: Callable[..., Any]) -> Tool:
             result = await fn(**validate_arguments(fn, arguments))
         except IesmError as exc:
             raise ToolError(str(exc)) from exc
-        text = [TextContent(type="text", text=json.dumps(result, indent=1))]  # one block, also for lists
+        text = [TextContent(type="text", text=json.dumps(result))]  # one block, also for lists
         return CallToolResult(content=text, structured_content=result if output_model else None)
 
     tool = _Tool.from_function(call, name=spec["name"], description=spec["description"], structured_output=False)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ... import contract
 from ..base import Message
@@ -105,8 +106,15 @@ def _fenced_string(text: str, name: str) -> str:
 
 
 def _lines(text: str, name: str) -> list[str]:
-    body = _between(text, name) or ""
-    return [ln for ln in (raw.strip().rstrip(",") for raw in body.splitlines()) if ln]
+    return list(_block_lines(_between(text, name) or ""))
+
+
+@lru_cache(maxsize=64)
+def _block_lines(body: str) -> tuple[str, ...]:
+    """The non-empty lines of a fenced block, stripped of spaces and a trailing comma. Memoised
+    by the block's text: a query's expert prompts all carry the same candidate block (about
+    12 kB on the apartment map; splitting it costs about 0.05 ms)."""
+    return tuple(ln for ln in (raw.strip().rstrip(",") for raw in body.splitlines()) if ln)
 
 
 def _json_objects(lines: list[str]) -> list[dict]:
