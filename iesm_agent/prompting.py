@@ -64,6 +64,7 @@ class PromptLibrary:
         from jinja2.sandbox import SandboxedEnvironment
 
         self.dirs = [Path(d) for d in dirs] + [resource_dir("prompts")]
+        self._exists: dict[str, bool] = {}
         for d in self.dirs[:-1]:
             if not d.is_dir():
                 raise IesmError("prompt directory does not exist", d)
@@ -82,8 +83,12 @@ class PromptLibrary:
         self._env.globals.update(task_line=contract.task_line, reply_format=contract.reply_format)
 
     def has(self, name: str) -> bool:
-        """True when a template `name` exists in the user directories or the shipped prompts."""
-        return any((d / name).is_file() for d in self.dirs)
+        """True when a template `name` exists in the user directories or the shipped prompts
+        (looked up once per library)."""
+        found = self._exists.get(name)
+        if found is None:
+            found = self._exists[name] = any((d / name).is_file() for d in self.dirs)
+        return found
 
     def template_for(self, expert: str, default: str) -> str:
         """The template an expert renders: `expert_<name>.j2` when one exists (a prompt experiment
