@@ -14,7 +14,12 @@ from .errors import IesmError
 
 class MappingConfig(BaseModel):
     """Instance association / fusion (Sec. 3.1) and the map-building settings around it:
-    `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
+    `delta_geo` (max-overlap, 0-1) and `delta_sem` (cosine) the paper's two association thresholds,
+    `w_geo` / `w_sem` the weights of phi that pick among linkable instances (paper values);
+    `delta_geo_strong` (max-overlap, 0-1, None = off) and `delta_sem_weak` (cosine): a pair whose
+    top-down masks overlap more than `delta_geo_strong` also links when its cosine exceeds
+    `delta_sem_weak` (not in the paper; set on tuning seeds 0-4, docs/results.md; `paper()` turns
+    it off); `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
     are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
     above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
     share of instances (smallest top-down area) whose categories count as small objects."""
@@ -25,11 +30,18 @@ class MappingConfig(BaseModel):
     delta_sem: float = 0.85
     w_geo: float = 0.7
     w_sem: float = 0.3
+    delta_geo_strong: Optional[float] = Field(0.7, gt=0, le=1)
+    delta_sem_weak: float = Field(0.6, ge=-1, le=1)
     cell_size: float = Field(0.05, gt=0)
     min_mask_pixels: int = Field(20, ge=1)
     max_depth: float = Field(10.0, gt=0)
     match_iou: float = Field(0.5, ge=0, lt=1)
     small_fraction: float = Field(0.2, gt=0, le=1)
+
+    @classmethod
+    def paper(cls, **values: Any) -> "MappingConfig":
+        """The paper's association alone (both thresholds on every pair, no strong-overlap link)."""
+        return cls(**{"delta_geo_strong": None, **values})
 
 
 class RetrievalConfig(BaseModel):

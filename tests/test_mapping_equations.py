@@ -13,7 +13,7 @@ from iesm_agent.mapping.dictionary import InstanceDictionary
 from iesm_agent.evals.mapping_metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, topk_curve
 from iesm_agent.mapping.project import TopDownCandidates, project_candidates
 
-CFG = MappingConfig()
+CFG = MappingConfig.paper()  # the paper's equations exactly (no strong-overlap link)
 
 
 def row_keys(row: int, cols) -> np.ndarray:
