@@ -19,8 +19,7 @@ class MappingConfig(BaseModel):
     `delta_geo_strong` (max-overlap, 0-1, None = off) and `delta_sem_weak` (cosine): a pair whose
     top-down masks overlap more than `delta_geo_strong` also links when its cosine exceeds
     `delta_sem_weak` (not in the paper; on by default at 0.7 / 0.6, set on tuning seeds 0-4, see
-    docs/results.md; `paper()` turns
-    it off); `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
+    docs/results.md; `paper()` turns it off); `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
     are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
     above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
     share of instances (smallest top-down area) whose categories count as small objects."""
