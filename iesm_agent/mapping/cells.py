@@ -28,7 +28,28 @@ def run_starts(sorted_values: np.ndarray) -> np.ndarray:
     """Indices where a new run of equal values begins in a sorted 1-D array."""
     if len(sorted_values) == 0:
         return np.zeros(0, np.int64)
-    return np.flatnonzero(np.r_[True, sorted_values[1:] != sorted_values[:-1]])
+    new = np.empty(len(sorted_values), bool)
+    new[0] = True
+    np.not_equal(sorted_values[1:], sorted_values[:-1], out=new[1:])
+    return np.flatnonzero(new)
+
+
+def group_ids(values: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Group equal integers without sorting floats or pairs.
+
+    `values` (n,) integers in [0, size). Returns (distinct (G,) int64 ascending, inverse (n,) int64
+    with distinct[inverse] == values, counts (G,) int64). Counting over a dense (size,) table when
+    `size` is at most 4 n (or 65,536), which is O(n + size); else `np.unique` (a sort).
+    """
+    values = np.asarray(values, np.int64)
+    if size <= max(4 * len(values), 1 << 16):
+        counts = np.bincount(values, minlength=size)
+        distinct = np.flatnonzero(counts)
+        rank = np.empty(size, np.int64)  # read only at `values`, all of which are in `distinct`
+        rank[distinct] = np.arange(len(distinct))
+        return distinct, rank[values], counts[distinct]
+    distinct, inverse, counts = np.unique(values, return_inverse=True, return_counts=True)
+    return distinct, inverse.reshape(-1), counts
 
 
 def union_max(keys_a: np.ndarray, top_a: np.ndarray, keys_b: np.ndarray,
