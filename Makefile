@@ -12,7 +12,7 @@ $(BIN)/python:
 $(STAMP): pyproject.toml | $(BIN)/python
 	# CPU build of torch from this machine's disk first, or pip fetches a multi-GB CUDA build.
 	$(BIN)/pip install -q torch==2.13.0
-	$(BIN)/pip install -q -e '.[embeddings,plots,mapping,mcp,dev]'
+	$(BIN)/pip install -q -e '.[embeddings,plots,mapping,mcp,segment,ray,dev]'
 	touch $(STAMP)
 
 install: $(STAMP)
