@@ -153,9 +153,9 @@ def json_depth(data: bytes) -> int:
     stripped = np.frombuffer(_STRING.sub(b'""', data), np.uint8)
     if stripped.size == 0:
         return 0
-    step = (np.isin(stripped, (ord("["), ord("{"))).astype(np.int32)
-            - np.isin(stripped, (ord("]"), ord("}"))).astype(np.int32))
-    return int(np.cumsum(step).max(initial=0))
+    opens = (stripped == 0x5B) | (stripped == 0x7B)   # [ {
+    closes = (stripped == 0x5D) | (stripped == 0x7D)  # ] }
+    return int(np.cumsum(opens.astype(np.int32) - closes).max(initial=0))
 
 
 def _reject_constant(name: str) -> Any:
