@@ -23,21 +23,29 @@ from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
 KEYS = ("ours", "vlmaps", "hovsg", "vs_vlmaps", "vs_hovsg")
 
 
-def measure_scene(frames: Path, seed: int, map_path: Path) -> dict:
-    """Build, segment, caption and save the map of `frames` to `map_path`; bytes of ours and both baselines."""
+def captioned_map(frames: Path, seed: int, map_path: Path):
+    """Build (default MappingConfig), segment rooms (simulator labels), caption offline and save the
+    map of `frames` to `map_path`; returns the scene."""
     from ...captioning import OfflineCaptioner, caption_map
     from ...frames import FrameSet
     from ...mapping.build import build_map
     from ...rooms import segment_rooms
     from ...sim.room_labels import ViewpointLabels
     from ...store import save_map
-    from ..storage import storage_comparison
 
     frameset = FrameSet.open(frames)
     scene = build_map(frameset)
     scene = segment_rooms(scene, ViewpointLabels(frames, seed=seed).cell_labels(scene.grid))
     scene = caption_map(scene, frameset, OfflineCaptioner())
     save_map(scene, map_path)
+    return scene
+
+
+def measure_scene(frames: Path, seed: int, map_path: Path) -> dict:
+    """The captioned map of `frames` saved to `map_path`; bytes of ours and both baselines."""
+    from ..storage import storage_comparison
+
+    scene = captioned_map(frames, seed, map_path)
     report = storage_comparison(frames, map_path)
     return {"ours": report.ours_bytes, "vlmaps": report.vlmaps_bytes, "hovsg": report.hovsg_bytes,
             "vs_vlmaps": report.saving_vs_vlmaps, "vs_hovsg": report.saving_vs_hovsg,

@@ -1,0 +1,123 @@
+"""The retrieval table on built maps: O-SR per query type and N-SR per method on simulated scenes.
+
+    python -m iesm_agent.evals.studies.retrieval --seeds 10-12 --realism realistic --out docs/results/retrieval-realistic
+
+Per seed: simulate a `--size small` scene, build, segment rooms and caption offline (as the demo,
+through the API: `storage.captioned_map`), write a query suite from ground truth
+(`evals/gt_queries.py`, types o,or,od,ord,ard, 10 per type, seed = scene seed) and run methods
+mtefr, spr and keyword with the offline model, N-SR against the ground truth.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import statistics
+import sys
+from pathlib import Path
+from typing import Optional
+
+from ...errors import IesmError
+from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+
+TYPES = ("o", "or", "od", "ord", "ard")
+METHODS = ("mtefr", "spr", "keyword")
+
+
+def score_scene(frames: Path, seed: int, work: Path) -> dict:
+    """O-SR per type and overall, N-SR overall, per method, on the captioned map of `frames`."""
+    from ..gt_queries import generate_gt_suite
+    from ..runner import make_config, make_variants, run_eval, write_run_outputs
+    from .storage import captioned_map
+
+    map_path = frames.with_suffix(".captioned.iesm")
+    captioned_map(frames, seed, map_path)
+    suite = work / f"suite-{seed}.jsonl"
+    _, dropped = asyncio.run(generate_gt_suite(str(map_path), frames, suite, list(TYPES), per_type=10, seed=seed))
+    config = make_config([suite], make_variants(list(METHODS), []), "offline", gt=[str(frames)])
+    run_dir = work / f"run-{seed}"
+    outcome = asyncio.run(run_eval(config, run_dir, resume=run_dir.exists()))
+    summary = write_run_outputs(run_dir, config, outcome)
+    out = {"queries": len(outcome.suite.entries), "dropped": dropped}
+    for method in METHODS:
+        m = summary["methods"][method]
+        out[method] = {"osr": {t: m["by_type"][t]["osr"] for t in TYPES if t in m["by_type"]},
+                       "osr_all": m["overall"]["osr"], "nsr": m["overall"].get("nsr")}
+    return out
+
+
+def mean_scores(rows: list[dict]) -> dict:
+    """Mean over scenes of each method's O-SR per type (scenes that have the type), overall O-SR and N-SR."""
+    out = {}
+    for method in METHODS:
+        osr = {t: statistics.fmean(vals) for t in TYPES
+               if (vals := [r[method]["osr"][t] for r in rows if t in r[method]["osr"]])}
+        nsr = [r[method]["nsr"] for r in rows if r[method]["nsr"] is not None]
+        out[method] = {"osr": osr, "osr_all": statistics.fmean(r[method]["osr_all"] for r in rows) if rows else None,
+                       "nsr": statistics.fmean(nsr) if nsr else None}
+    return out
+
+
+def _pct(v) -> str:
+    return "-" if v is None else f"{100 * v:.1f}"
+
+
+def render_table(summary: dict) -> str:
+    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} (not used for tuning); simulated "
+             "`--size small` scenes, built maps with rooms (simulator labels) and offline captions; queries from "
+             "ground truth (`evals/gt_queries.py`, types " + ",".join(TYPES) + ", 10 per type, seed = scene seed; "
+             f"{sum(r['queries'] for r in summary['scenes'])} queries kept, "
+             f"{sum(r['dropped'] for r in summary['scenes'])} dropped for an unmatched target); offline model; "
+             "N-SR against the ground truth. O-SR and N-SR in %, mean over seeds.", "",
+             "| Method | " + " | ".join(TYPES) + " | O-SR | N-SR |", "|---|" + "---:|" * (len(TYPES) + 2)]
+    for method in METHODS:
+        m = summary["mean"].get(method)
+        if not m:
+            continue
+        lines.append(f"| {method} | " + " | ".join(_pct(m["osr"].get(t)) for t in TYPES)
+                     + f" | {_pct(m['osr_all'])} | {_pct(m['nsr'])} |")
+    lines += ["", f"Skipped: {'; '.join(summary['skipped'])}"] if summary["skipped"] else []
+    return "\n".join(lines) + "\n"
+
+
+def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str, realism: str = "realistic") -> dict:
+    rows: list[dict] = []
+    skipped: list[str] = []
+    with scene_frames(work) as cache:
+        for seed in seeds:
+            try:
+                frames = cache.prepare(seed, "small", False, realism)
+                rows.append({"seed": seed, **score_scene(frames, seed, cache.root)})
+            except IesmError as exc:  # a scene the simulator or mapper cannot make is reported, not fatal
+                skipped.append(f"seed {seed}: {exc}")
+                print(f"skipped {skipped[-1]}", file=sys.stderr, flush=True)
+                continue
+            print(f"{realism} seed {seed}: " + ", ".join(f"{m} O-SR {_pct(rows[-1][m]['osr_all'])}" for m in METHODS),
+                  file=sys.stderr, flush=True)
+    summary = {"seeds": seeds, "seeds_arg": seeds_arg, "realism": realism, "size": "small", "scenes": rows,
+               "skipped": skipped, "mean": mean_scores(rows) if rows else {}}
+    command = (f"python -m iesm_agent.evals.studies.retrieval --seeds {seeds_arg} --realism {realism} "
+               f"--out {out.as_posix()}")
+    write_table(out, f"Retrieval on built maps of simulated scenes ({realism} profile)", command,
+                render_table(summary), summary)
+    return summary
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.retrieval",
+                                     description=__doc__.split("\n\n")[0])
+    common_args(parser, "10-12", "docs/results/retrieval-realistic")
+    args = parser.parse_args(argv)
+    try:
+        seeds = parse_seeds(args.seeds)
+        check_seeds(seeds, args.allow_tuning_seeds)
+        summary = run_study(seeds, args.out, args.work, args.seeds, args.realism)
+    except IesmError as exc:
+        print(f"iesm: error: {exc}")
+        return 2
+    print(render_table(summary))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
