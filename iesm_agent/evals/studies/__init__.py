@@ -6,7 +6,7 @@ command, profile and seeds) and OUT/summary.json (per-seed rows and means) under
     python -m iesm_agent.evals.studies.captions --seeds 10-14 --realism realistic --out docs/results/captions-realistic
     python -m iesm_agent.evals.studies.calibration --seeds 10-14 --realism realistic --out docs/results/calibration-realistic
     python -m iesm_agent.evals.studies.retrieval --seeds 10-12 --realism realistic --out docs/results/retrieval-realistic
-    python -m iesm_agent.evals.studies.storage --seeds 10 --out docs/results/storage
+    python -m iesm_agent.evals.studies.storage --seeds 10-12 --realism realistic --out docs/results/storage-realistic
 
 Seeds 0-4 are tuning seeds (the mapping thresholds, the room split and the realism profile were
 set on them); reported tables use seeds 10 and up (`check_seeds`).
@@ -17,9 +17,10 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
+import sys
 import tempfile
 from pathlib import Path
-from typing import Iterator, Optional
+from typing import Callable, Iterator, Optional
 
 from ...errors import IesmError
 
@@ -109,3 +110,55 @@ def common_args(parser: argparse.ArgumentParser, default_seeds: str, default_out
     parser.add_argument("--out", type=Path, default=Path(default_out))
     parser.add_argument("--work", type=Path, default=None, help="keep (and reuse) rendered scenes and maps here")
     parser.add_argument("--allow-tuning-seeds", action="store_true", help="for tuning runs; never for reported tables")
+
+
+def study_command(module: str, seeds_arg: str, realism: str, out: Path, *extra: str) -> str:
+    """The exact command that rebuilds a study's table (written at the top of table.md)."""
+    return " ".join([f"python -m iesm_agent.evals.studies.{module} --seeds {seeds_arg} --realism {realism}",
+                     *extra, f"--out {out.as_posix()}"])
+
+
+def scene_rows(seeds: list[int], score: Callable[[int], dict], describe: Callable[[dict], str],
+               label: str) -> tuple[list[dict], list[str]]:
+    """({"seed": s, **score(s)} per seed, skipped): a seed whose scene the simulator or mapper cannot
+    make (`IesmError`) is reported in `skipped`, not fatal. Progress (`describe(row)`) on stderr."""
+    rows: list[dict] = []
+    skipped: list[str] = []
+    for seed in seeds:
+        try:
+            rows.append({"seed": seed, **score(seed)})
+        except IesmError as exc:
+            skipped.append(f"{label} seed {seed}: {exc}".strip())
+            log_stderr(f"skipped {skipped[-1]}")
+            continue
+        log_stderr(f"{label} seed {seed}: {describe(rows[-1])}".strip())
+    return rows, skipped
+
+
+def study_main(module: str, doc: str, default_seeds: str, default_out: str,
+               run: Callable[[argparse.Namespace, list[int]], object], argv: list[str] | None = None,
+               extra_args: Callable[[argparse.ArgumentParser], None] | None = None) -> int:
+    """The command line of study `module`: the common arguments (plus `extra_args`), seeds parsed
+    and checked, `run(args, seeds)`, then OUT/table.md printed; a user error is one line, exit 2."""
+    parser = argparse.ArgumentParser(prog=f"python -m iesm_agent.evals.studies.{module}",
+                                     description=doc.strip().split("\n\n")[0])
+    common_args(parser, default_seeds, default_out)
+    if extra_args is not None:
+        extra_args(parser)
+    args = parser.parse_args(argv)
+    try:
+        seeds = parse_seeds(args.seeds)
+        check_seeds(seeds, args.allow_tuning_seeds)
+        run(args, seeds)
+    except IesmError as exc:
+        print(f"iesm: error: {exc}", file=sys.stderr)
+        return 2
+    table = args.out / "table.md"
+    if table.is_file():
+        print(table.read_text(encoding="utf-8"))
+    return 0
+
+
+def log_stderr(line: str) -> None:
+    """Progress lines of a study, on stderr."""
+    print(line, file=sys.stderr, flush=True)

@@ -11,13 +11,12 @@ embedding's best category (Z = F E^T over scene.json's categories) is the instan
 
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 
 import numpy as np
 
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import log_stderr, scene_frames, study_command, study_main, write_table
 
 
 def frame_top1(frames_dir: Path) -> dict:
@@ -80,22 +79,14 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: P
     lines.append("| mean | | " + " | ".join(fmt(mean[k]) for k in keys) + " |")
     lines += ["", "Paper, real data (fused maps, matching-normalised top-1): Replica 0.447, HM3D-Sem 0.210."]
     summary = {"seeds": seeds, "realism": realism, "rows": rows, "mean": mean}
-    write_table(out, "Per-frame against fused mask categorisation", f"python -m iesm_agent.evals.studies.calibration --seeds {seeds_arg} "
-                f"--realism {realism} --out {out.as_posix()}", "\n".join(lines), summary)
+    write_table(out, "Per-frame against fused mask categorisation",
+                study_command("calibration", seeds_arg, realism, out), "\n".join(lines), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.calibration",
-                                     description=__doc__.splitlines()[0])
-    common_args(parser, "10-14", "docs/results/calibration-realistic")
-    args = parser.parse_args(argv)
-    seeds = parse_seeds(args.seeds)
-    check_seeds(seeds, args.allow_tuning_seeds)
-    run_study(seeds, args.out, args.realism, args.seeds, args.work,
-              log=lambda line: print(line, file=sys.stderr, flush=True))
-    return 0
-
+    return study_main("calibration", __doc__, "10-14", "docs/results/calibration-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, a.realism, a.seeds, a.work, log=log_stderr), argv)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -10,13 +10,12 @@ captioner (`iesm caption --frames`), and score its colours against the ground tr
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 from pathlib import Path
 from typing import Optional
 
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import log_stderr, scene_frames, study_command, study_main, write_table
 
 
 def score_scene(frames: Path, built: Path) -> dict:
@@ -51,23 +50,13 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: O
                  f"{mean['colour_name_acc']:.3f} |")
     summary = {"seeds": seeds, "realism": realism, "rows": rows, "mean": mean}
     write_table(out, f"Caption colours on built maps ({realism} profile)",
-                f"python -m iesm_agent.evals.studies.captions --seeds {seeds_arg} --realism {realism} "
-                f"--out {out.as_posix()}", "\n".join(lines), summary)
+                study_command("captions", seeds_arg, realism, out), "\n".join(lines), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.captions",
-                                     description=__doc__.splitlines()[0])
-    common_args(parser, "10-14", "docs/results/captions-realistic")
-    args = parser.parse_args(argv)
-    seeds = parse_seeds(args.seeds)
-    check_seeds(seeds, args.allow_tuning_seeds)
-    run_study(seeds, args.out, args.realism, args.seeds, args.work,
-              log=lambda line: print(line, file=sys.stderr, flush=True))
-    print((args.out / "table.md").read_text())
-    return 0
-
+    return study_main("captions", __doc__, "10-14", "docs/results/captions-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, a.realism, a.seeds, a.work, log=log_stderr), argv)
 
 if __name__ == "__main__":
     sys.exit(main())

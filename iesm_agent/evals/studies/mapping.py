@@ -22,7 +22,7 @@ from ...config import MappingConfig
 from ...frames import FrameSet
 from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import log_stderr, scene_frames, study_command, study_main, write_table
 from ..baseline2d import PointwiseMap2D
 from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
 
@@ -141,8 +141,7 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
                 f"{o['ours']['auc_top']['top1_match']:.3f}, Inst. Diff {o['ours']['instance_diff']} of "
                 f"{o['ours']['n_gt']} (w/o 2nd pass {o['ours_no_second_pass']['instance_diff']})")
     mean = summarise(per_scene)
-    command = (f"python -m iesm_agent.evals.studies.mapping --seeds {seeds_arg} --realism {realism} "
-               f"--size {size} --out {out.as_posix()}")
+    command = study_command("mapping", seeds_arg, realism, out, f"--size {size}")
     summary = {"seeds": seeds, "realism": realism, "size": size, "config": cfg.model_dump(), "mean": mean,
                "scenes": per_scene}
     write_table(out, f"Mapping study ({realism} profile)", command,
@@ -151,18 +150,13 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.mapping", description=__doc__.splitlines()[0])
-    common_args(parser, "10-14", "docs/results/mapping-realistic")
-    parser.add_argument("--size", default="small", choices=["small", "hm3d"])
-    parser.add_argument("--space", default=None, help="embedding space (default: the best available)")
-    args = parser.parse_args(argv)
-    seeds = parse_seeds(args.seeds)
-    check_seeds(seeds, args.allow_tuning_seeds)
-    run_study(seeds, args.out, realism=args.realism, seeds_arg=args.seeds, size=args.size, work=args.work,
-              space=args.space, log=lambda line: print(line, file=sys.stderr, flush=True))
-    print((args.out / "table.md").read_text())
-    return 0
+    def extra(parser: argparse.ArgumentParser) -> None:
+        parser.add_argument("--size", default="small", choices=["small", "hm3d"])
+        parser.add_argument("--space", default=None, help="embedding space (default: the best available)")
 
+    return study_main("mapping", __doc__, "10-14", "docs/results/mapping-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, realism=a.realism, seeds_arg=a.seeds, size=a.size,
+                                                 work=a.work, space=a.space, log=log_stderr), argv, extra)
 
 if __name__ == "__main__":
     sys.exit(main())

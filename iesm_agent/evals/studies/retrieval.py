@@ -10,15 +10,12 @@ mtefr, spr and keyword with the offline model, N-SR against the ground truth.
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import statistics
-import sys
 from pathlib import Path
 from typing import Optional
 
-from ...errors import IesmError
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import scene_frames, scene_rows, study_command, study_main, write_table
 
 TYPES = ("o", "or", "od", "ord", "ard")
 METHODS = ("mtefr", "spr", "keyword")
@@ -81,43 +78,20 @@ def render_table(summary: dict) -> str:
 
 
 def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str, realism: str = "realistic") -> dict:
-    rows: list[dict] = []
-    skipped: list[str] = []
     with scene_frames(work) as cache:
-        for seed in seeds:
-            try:
-                frames = cache.prepare(seed, "small", False, realism)
-                rows.append({"seed": seed, **score_scene(frames, seed, cache.root)})
-            except IesmError as exc:  # a scene the simulator or mapper cannot make is reported, not fatal
-                skipped.append(f"seed {seed}: {exc}")
-                print(f"skipped {skipped[-1]}", file=sys.stderr, flush=True)
-                continue
-            print(f"{realism} seed {seed}: " + ", ".join(f"{m} O-SR {_pct(rows[-1][m]['osr_all'])}" for m in METHODS),
-                  file=sys.stderr, flush=True)
+        rows, skipped = scene_rows(
+            seeds, lambda seed: score_scene(cache.prepare(seed, "small", False, realism), seed, cache.root),
+            lambda r: ", ".join(f"{m} O-SR {_pct(r[m]['osr_all'])}" for m in METHODS), realism)
     summary = {"seeds": seeds, "seeds_arg": seeds_arg, "realism": realism, "size": "small", "scenes": rows,
                "skipped": skipped, "mean": mean_scores(rows) if rows else {}}
-    command = (f"python -m iesm_agent.evals.studies.retrieval --seeds {seeds_arg} --realism {realism} "
-               f"--out {out.as_posix()}")
-    write_table(out, f"Retrieval on built maps of simulated scenes ({realism} profile)", command,
-                render_table(summary), summary)
+    write_table(out, f"Retrieval on built maps of simulated scenes ({realism} profile)",
+                study_command("retrieval", seeds_arg, realism, out), render_table(summary), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.retrieval",
-                                     description=__doc__.split("\n\n")[0])
-    common_args(parser, "10-12", "docs/results/retrieval-realistic")
-    args = parser.parse_args(argv)
-    try:
-        seeds = parse_seeds(args.seeds)
-        check_seeds(seeds, args.allow_tuning_seeds)
-        summary = run_study(seeds, args.out, args.work, args.seeds, args.realism)
-    except IesmError as exc:
-        print(f"iesm: error: {exc}")
-        return 2
-    print(render_table(summary))
-    return 0
-
+    return study_main("retrieval", __doc__, "10-12", "docs/results/retrieval-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
 
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -14,14 +14,11 @@ map's labels.
 
 from __future__ import annotations
 
-import argparse
 import statistics
-import sys
 from pathlib import Path
 from typing import Optional
 
-from ...errors import IesmError
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import scene_frames, scene_rows, study_command, study_main, write_table
 
 METHODS = {"baseline": "per-cell labels (CLIP-like baseline)", "lsd": "LSD components + majority (paper)",
            "split": "LSD + contextual split (ours)"}
@@ -80,45 +77,28 @@ def render_table(summary: dict) -> str:
 
 
 def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str, realism: str = "realistic") -> dict:
-    scenes: dict[str, list[dict]] = {"walled": [], "open": []}
+    scenes: dict[str, list[dict]] = {}
     skipped: list[str] = []
     with scene_frames(work) as cache:
-        for seed in seeds:
-            for setting in scenes:
-                try:
-                    frames = cache.prepare(seed, "small", setting == "open", realism)
-                    built = cache.built(frames)
-                except IesmError as exc:  # a scene the simulator or mapper cannot make is reported, not fatal
-                    skipped.append(f"{setting} seed {seed}: {exc}")
-                    print(f"skipped {skipped[-1]}", file=sys.stderr, flush=True)
-                    continue
-                scenes[setting].append({"seed": seed, **score_scene(frames, built, seed)})
-                print(f"{realism} {setting} seed {seed}: " + ", ".join(
-                    f"{method} miou {scenes[setting][-1][method]['miou']:.3f}" for method in METHODS),
-                    file=sys.stderr, flush=True)
+        for setting in ("walled", "open"):
+            def score(seed: int, setting: str = setting) -> dict:
+                frames = cache.prepare(seed, "small", setting == "open", realism)
+                return score_scene(frames, cache.built(frames), seed)
+
+            scenes[setting], missed = scene_rows(
+                seeds, score, lambda r: ", ".join(f"{m} miou {r[m]['miou']:.3f}" for m in METHODS),
+                f"{realism} {setting}")
+            skipped += missed
     summary = {"seeds": seeds, "seeds_arg": seeds_arg, "realism": realism, "scenes": scenes, "skipped": skipped,
                "mean": {s: {m: _mean(rows, m) for m in METHODS} for s, rows in scenes.items() if rows}}
-    command = (f"python -m iesm_agent.evals.studies.rooms --seeds {seeds_arg} --realism {realism} "
-               f"--out {out.as_posix()}")
-    write_table(out, f"Room segmentation on simulated scenes ({realism} profile)", command, render_table(summary),
-                summary)
+    write_table(out, f"Room segmentation on simulated scenes ({realism} profile)",
+                study_command("rooms", seeds_arg, realism, out), render_table(summary), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.rooms", description=__doc__.split("\n\n")[0])
-    common_args(parser, "10-14", "docs/results/rooms-realistic")
-    args = parser.parse_args(argv)
-    try:
-        seeds = parse_seeds(args.seeds)
-        check_seeds(seeds, args.allow_tuning_seeds)
-        summary = run_study(seeds, args.out, args.work, args.seeds, args.realism)
-    except IesmError as exc:
-        print(f"iesm: error: {exc}")
-        return 2
-    print(render_table(summary))
-    return 0
-
+    return study_main("rooms", __doc__, "10-14", "docs/results/rooms-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
 
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -11,14 +11,11 @@ with `iesm_agent/evals/storage.py` `storage_comparison` (its `ASSUMPTIONS` are q
 
 from __future__ import annotations
 
-import argparse
 import statistics
-import sys
 from pathlib import Path
 from typing import Optional
 
-from ...errors import IesmError
-from . import check_seeds, common_args, parse_seeds, scene_frames, write_table
+from . import scene_frames, scene_rows, study_command, study_main, write_table
 
 KEYS = ("ours", "vlmaps", "hovsg", "vs_vlmaps", "vs_hovsg")
 
@@ -77,43 +74,23 @@ def render_table(summary: dict) -> str:
 
 
 def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str, realism: str = "realistic") -> dict:
-    rows: list[dict] = []
-    skipped: list[str] = []
     with scene_frames(work) as cache:
-        for seed in seeds:
-            try:
-                frames = cache.prepare(seed, "small", False, realism)
-                rows.append({"seed": seed, **measure_scene(frames, seed, frames.with_suffix(".captioned.iesm"))})
-            except IesmError as exc:  # a scene the simulator or mapper cannot make is reported, not fatal
-                skipped.append(f"seed {seed}: {exc}")
-                print(f"skipped {skipped[-1]}", file=sys.stderr, flush=True)
-                continue
-            print(f"{realism} seed {seed}: ours {rows[-1]['ours'] / 1e6:.3f} MB, saving {rows[-1]['vs_vlmaps']:.1%} "
-                  f"vs VLMaps, {rows[-1]['vs_hovsg']:.1%} vs HOV-SG", file=sys.stderr, flush=True)
+        def score(seed: int) -> dict:
+            frames = cache.prepare(seed, "small", False, realism)
+            return measure_scene(frames, seed, frames.with_suffix(".captioned.iesm"))
+
+        rows, skipped = scene_rows(seeds, score, lambda r: f"ours {r['ours'] / 1e6:.3f} MB, saving "
+                                   f"{r['vs_vlmaps']:.1%} vs VLMaps, {r['vs_hovsg']:.1%} vs HOV-SG", realism)
     summary = {"seeds": seeds, "seeds_arg": seeds_arg, "realism": realism, "size": "small", "scenes": rows,
                "skipped": skipped, "mean": mean_rows(rows)}
-    command = (f"python -m iesm_agent.evals.studies.storage --seeds {seeds_arg} --realism {realism} "
-               f"--out {out.as_posix()}")
-    write_table(out, f"Storage on simulated small scenes ({realism} profile)", command, render_table(summary),
-                summary)
+    write_table(out, f"Storage on simulated small scenes ({realism} profile)",
+                study_command("storage", seeds_arg, realism, out), render_table(summary), summary)
     return summary
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m iesm_agent.evals.studies.storage",
-                                     description=__doc__.split("\n\n")[0])
-    common_args(parser, "10-12", "docs/results/storage-realistic")
-    args = parser.parse_args(argv)
-    try:
-        seeds = parse_seeds(args.seeds)
-        check_seeds(seeds, args.allow_tuning_seeds)
-        summary = run_study(seeds, args.out, args.work, args.seeds, args.realism)
-    except IesmError as exc:
-        print(f"iesm: error: {exc}")
-        return 2
-    print(render_table(summary))
-    return 0
-
+    return study_main("storage", __doc__, "10-12", "docs/results/storage-realistic",
+                      lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
 
 if __name__ == "__main__":
     raise SystemExit(main())
