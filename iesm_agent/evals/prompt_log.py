@@ -10,10 +10,9 @@ runner joins each `CallTrace` of a result with what the recorder saw.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 from ..prompting import PromptLibrary
-from ..providers.base import ChatOptions, Completion, Message, Model
+from ..providers.base import ChatOptions, Completion, Message, Model, WrappedModel
 from ..retrieval.calls import prompt_sha256
 from ..retrieval.result import CallTrace
 from .journal import KeptCall
@@ -30,15 +29,12 @@ def template_hashes(prompts_dir: str | Path | None) -> dict[str, str]:
     return {name: library.source_hash(name) for name in names}
 
 
-class PromptRecorder(Model):
+class PromptRecorder(WrappedModel):
     """`model` unchanged, remembering the rendered messages and the full reply of each call by
     prompt sha256 (the same prompt asked twice keeps its latest reply)."""
 
     def __init__(self, model: Model):
-        self.inner = model
-        self.name = model.name
-        self.capabilities = model.capabilities
-        self.cacheable = model.cacheable
+        super().__init__(model)
         self.messages: dict[str, list[dict[str, str]]] = {}
         self.replies: dict[str, str] = {}
 
@@ -53,18 +49,6 @@ class PromptRecorder(Model):
         """`trace` with the prompt and full reply this recorder saw for it."""
         return KeptCall(**trace.model_dump(exclude={"reply"}), reply=self.replies.get(trace.prompt_sha256, trace.reply),
                         messages=self.messages.get(trace.prompt_sha256))
-
-    def cache_identity(self) -> dict[str, Any]:
-        return self.inner.cache_identity()
-
-    def estimate_tokens(self, messages: list[Message]) -> int:
-        return self.inner.estimate_tokens(messages)
-
-    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
-        return await self.inner.aprompt_limit(options)
-
-    async def aclose(self) -> None:
-        await self.inner.aclose()
 
 
 def journaled_calls(calls: list[CallTrace], recorder: PromptRecorder | None) -> list[KeptCall]:

@@ -115,3 +115,27 @@ class Model(ABC):
 
     async def aclose(self) -> None:
         """Release connections (the model stays usable and reconnects lazily); a no-op by default."""
+
+
+class WrappedModel(Model):
+    """A model that adds something around `inner` (a response cache, a prompt recorder, a worker
+    pool): name, capabilities, cacheability, cache identity, prompt limit, token estimate and
+    closing are the inner model's. Subclasses implement `acomplete`."""
+
+    def __init__(self, inner: Model):
+        self.inner = inner
+        self.name = inner.name
+        self.capabilities = inner.capabilities
+        self.cacheable = inner.cacheable
+
+    def cache_identity(self) -> dict[str, Any]:
+        return self.inner.cache_identity()
+
+    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
+        return await self.inner.aprompt_limit(options)
+
+    def estimate_tokens(self, messages: list[Message]) -> int:
+        return self.inner.estimate_tokens(messages)
+
+    async def aclose(self) -> None:
+        await self.inner.aclose()

@@ -23,7 +23,7 @@ import diskcache
 from pydantic import ValidationError
 
 from ..cachedir import default_cache_dir
-from .base import ChatOptions, Completion, Message, Model
+from .base import ChatOptions, Completion, Message, Model, WrappedModel
 
 #: bump when the key layout changes, so old entries are never misread
 KEY_VERSION = 2
@@ -97,7 +97,7 @@ def _probe(cache_dir: Path) -> None:
         con.close()
 
 
-class CachedModel(Model):
+class CachedModel(WrappedModel):
     """`inner` behind a disk cache in `cache_dir` (default: `default_cache_dir()`).
 
     A hit returns the stored completion with `cached=True` and `latency_ms` = lookup time.
@@ -106,9 +106,7 @@ class CachedModel(Model):
     """
 
     def __init__(self, inner: Model, cache_dir: str | Path | None = None):
-        self.inner = inner
-        self.name = inner.name
-        self.capabilities = inner.capabilities
+        super().__init__(inner)
         self.cache_dir = Path(cache_dir).expanduser() if cache_dir is not None else default_cache_dir()
         self.hits = self.misses = 0
         self.disabled_reason: str | None = None
@@ -117,15 +115,6 @@ class CachedModel(Model):
 
     def __repr__(self) -> str:
         return f"CachedModel({self.inner!r}, cache_dir={str(self.cache_dir)!r})"
-
-    def cache_identity(self) -> dict[str, Any]:
-        return self.inner.cache_identity()
-
-    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
-        return await self.inner.aprompt_limit(options)
-
-    def estimate_tokens(self, messages: list[Message]) -> int:
-        return self.inner.estimate_tokens(messages)
 
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
         options = options or ChatOptions()

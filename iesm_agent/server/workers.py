@@ -20,7 +20,7 @@ import threading
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any, Callable, Coroutine
 
-from ..providers.base import ChatOptions, Completion, Message, Model
+from ..providers.base import ChatOptions, Completion, Message, Model, WrappedModel
 
 
 class WorkerPool:
@@ -56,27 +56,13 @@ class WorkerPool:
             self._loops.pop().close()
 
 
-class OffLoopModel(Model):
+class OffLoopModel(WrappedModel):
     """`model` with its completions computed on `pool`; everything else is the model's own."""
 
     def __init__(self, model: Model, pool: WorkerPool):
-        self.inner = model
+        super().__init__(model)
         self.pool = pool
-        self.name = model.name
-        self.capabilities = model.capabilities
-        self.cacheable = model.cacheable
 
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
         return await self.pool.run_async(self.inner.acomplete, messages, options)
 
-    def cache_identity(self) -> dict[str, Any]:
-        return self.inner.cache_identity()
-
-    def estimate_tokens(self, messages: list[Message]) -> int:
-        return self.inner.estimate_tokens(messages)
-
-    async def aprompt_limit(self, options: ChatOptions | None = None) -> int | None:
-        return await self.inner.aprompt_limit(options)
-
-    async def aclose(self) -> None:
-        await self.inner.aclose()
