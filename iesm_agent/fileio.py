@@ -133,6 +133,20 @@ def pyplot(where: str | None = None):
     return plt
 
 
+def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError) -> np.ndarray:
+    """RGB uint8 (H, W, 3) when `color`, else the raw single-channel image (e.g. uint16 depth);
+    a missing or unreadable file is an `error` naming it."""
+    import cv2
+
+    path = Path(path)
+    if not path.is_file():
+        raise error("file is missing", path)
+    image = cv2.imread(str(path), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
+    if image is None:
+        raise error("not a readable image", path)
+    return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
+
+
 def save_figure(fig, path: str | Path, dpi: int = 150, tight: bool = True) -> None:
     """Write a matplotlib figure to `path` as PNG atomically, then close it."""
     plt = pyplot()

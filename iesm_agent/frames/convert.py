@@ -18,7 +18,8 @@ from ..errors import IesmError
 from .checks import BadFrame, SkipLog, check_depth_unit, pose_reason
 from .gravity import Alignment, estimate_alignment, identity
 from .ours import Frame, SceneMeta, write_frame, write_frame_set
-from .recording import Recording, read_image
+from ..fileio import read_image
+from .recording import Recording
 
 ALIGN_SAMPLE = 30  # frames used to find the floor
 
@@ -89,7 +90,7 @@ def import_recording(rec: Recording, out_dir: Path, *, scene_id: str, embedding_
         raise IesmError(f"no readable frame ({log.summary()})", rec.directory)
     for f in sample[:3]:  # the raw readings: clean_depth would already have dropped "too far" ones
         path = rec.refs[f.index].depth
-        raw = read_image(path, color=False).astype(np.float64)
+        raw = read_image(path, color=False, error=BadFrame).astype(np.float64)
         check_depth_unit(raw[np.isfinite(raw)] / rec.depth_scale, rec.depth_scale, path, rec.layout)
     alignment = estimate_alignment(sample, rec.intrinsics, up=rec.up) if align else \
         identity("gravity: not aligned (--no-align): poses kept in the recording's world")

@@ -19,7 +19,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from ..errors import IesmError
 from ..store.model import Count
-from ..fileio import atomic_write, read_json_model, read_npz, write_png, write_text
+from ..fileio import atomic_write, read_image, read_json_model, read_npz, write_png, write_text
 
 FORMAT = "iesm-frames"
 VERSION = 1
@@ -173,23 +173,6 @@ def write_frame_features(directory: str | Path, features: np.ndarray) -> None:
 # ---------------------------------------------------------------------------------------- reading
 
 
-def _read_npz(path: Path, keys: tuple[str, ...], kinds: dict[str, str] | str = "biufU",
-              check=None) -> dict[str, np.ndarray]:
-    """`fileio.read_npz`: headers checked before reading, a corrupt archive is one `IesmError`."""
-    return read_npz(path, keys, kinds=kinds, check=check)
-
-
-def _read_png(path: Path, color: bool) -> np.ndarray:
-    import cv2
-
-    if not path.is_file():
-        raise IesmError("file is missing", path)
-    image = cv2.imread(str(path), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
-    if image is None:
-        raise IesmError("not a readable image", path)
-    return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
-
-
 def _read_pose(path: Path) -> np.ndarray:
     if not path.is_file():
         raise IesmError("file is missing", path)
@@ -215,7 +198,7 @@ def _read_segmentation(path: Path, hw: tuple[int, int]) -> Segmentation:
         if name == "masks" and (len(shape) != 3 or shape[1:] != hw):
             raise IesmError(f"masks have shape {shape}, frame is {hw}", path)
 
-    data = _read_npz(path, ("masks", "embeddings", "scores"), check=check,
+    data = read_npz(path, ("masks", "embeddings", "scores"), check=check,
                      kinds={"masks": "bu", "embeddings": "f", "scores": "f"})
     masks, embeddings, scores = data["masks"], data["embeddings"], data["scores"]
     if not np.all(np.isfinite(embeddings)):
@@ -263,7 +246,7 @@ class FrameSet:
         path = self.directory / "vocabulary.npz"
         if not path.is_file():
             return None
-        data = _read_npz(path, ("names", "embeddings", "room_names", "room_embeddings"))
+        data = read_npz(path, ("names", "embeddings", "room_names", "room_embeddings"), kinds="biufU")
         if data["embeddings"].ndim != 2 or len(data["embeddings"]) != len(data["names"]):
             raise IesmError(f"{len(data['names'])} names but embeddings of shape {data['embeddings'].shape}", path)
         return data
@@ -273,7 +256,7 @@ class FrameSet:
         path = self.directory / "frame_features.npz"
         if not path.is_file():
             return None
-        features = _read_npz(path, ("features",))["features"]
+        features = read_npz(path, ("features",), kinds="biufU")["features"]
         if features.ndim != 2 or len(features) != len(self):
             raise IesmError(f"features have shape {features.shape}, the set has {len(self)} frames", path)
         return features.astype(np.float32, copy=False)
@@ -282,8 +265,8 @@ class FrameSet:
         if not 0 <= index < len(self):
             raise IndexError(f"frame {index} out of range (0..{len(self) - 1})")
         hw = (self.intrinsics.height, self.intrinsics.width)
-        rgb = _read_png(self.path(index, "rgb.png"), color=True)
-        depth_raw = _read_png(self.path(index, "depth.png"), color=False)
+        rgb = read_image(self.path(index, "rgb.png"), color=True)
+        depth_raw = read_image(self.path(index, "depth.png"), color=False)
         for path, image in ((self.path(index, "rgb.png"), rgb), (self.path(index, "depth.png"), depth_raw)):
             if image.shape[:2] != hw:
                 raise IesmError(f"image is {image.shape[:2]}, intrinsics.json says {hw}", path)
@@ -294,7 +277,7 @@ class FrameSet:
         segmentation = _read_segmentation(seg_path, hw) if seg_path.is_file() else None
         instance_ids = None
         if inst_path.is_file():
-            inst = _read_png(inst_path, color=False)
+            inst = read_image(inst_path, color=False)
             if inst.shape != hw:
                 raise IesmError(f"instance image is {inst.shape}, frame is {hw}", inst_path)
             instance_ids = inst.astype(np.int32)

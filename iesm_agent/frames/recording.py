@@ -12,6 +12,7 @@ from typing import Optional
 import numpy as np
 
 from ..errors import IesmError
+from ..fileio import read_image
 from .checks import BadFrame, SkipLog, check_pose, clean_depth
 from .ours import Frame, Intrinsics
 
@@ -54,30 +55,18 @@ class Recording:
             raise BadFrame(ref.pose_error or "no pose", ref.pose_source)
         pose = check_pose(ref.pose, ref.pose_source)
         hw = (self.intrinsics.height, self.intrinsics.width)
-        raw = read_image(ref.depth, color=False)
+        raw = read_image(ref.depth, color=False, error=BadFrame)
         if raw.shape[:2] != hw:
             raise BadFrame(f"depth image is {raw.shape[:2]}, the intrinsics say {hw}", ref.depth)
         if raw.dtype not in (np.uint16, np.float32, np.float64, np.int32):
             raise BadFrame(f"depth must be 16-bit or floating point, got {raw.dtype}", ref.depth)
         depth = clean_depth(raw, self.depth_scale, self.max_depth, ref.depth, log)
-        rgb = read_image(ref.color, color=True)
+        rgb = read_image(ref.color, color=True, error=BadFrame)
         if rgb.shape[:2] != hw:
             import cv2
 
             rgb = cv2.resize(rgb, (hw[1], hw[0]), interpolation=cv2.INTER_AREA)
         return Frame(index=i, rgb=rgb, depth=depth, pose=pose)
-
-
-def read_image(path: Path, color: bool) -> np.ndarray:
-    """RGB uint8 (H, W, 3) or the raw single-channel image; `BadFrame` when missing or unreadable."""
-    import cv2
-
-    if not path.is_file():
-        raise BadFrame("file is missing", path)
-    image = cv2.imread(str(path), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
-    if image is None:
-        raise BadFrame("not a readable image", path)
-    return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
 
 
 def read_matrix(path: Path, shape: tuple[int, int]) -> np.ndarray:
@@ -106,7 +95,7 @@ def intrinsics_from_matrix(k: np.ndarray, width: int, height: int, source: Path)
 
 def image_size(path: Path) -> tuple[int, int]:
     """(width, height) of an image file."""
-    image = read_image(path, color=False)
+    image = read_image(path, color=False, error=BadFrame)
     return image.shape[1], image.shape[0]
 
 
