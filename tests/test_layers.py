@@ -23,13 +23,18 @@ def _package(module: str) -> str:
     return parts[1] if len(parts) > 1 else "__init__"
 
 
-def _imports(path: Path):
-    """(imported module, line) of every import in `path`, relative imports resolved."""
+def _module_of(path: Path) -> tuple[str, bool]:
+    """(dotted module name, is a package's __init__) of a file under the package root."""
     module = ".".join(path.relative_to(ROOT.parent).with_suffix("").parts)
-    is_package = path.name == "__init__.py"
-    if is_package:
-        module = module.rsplit(".", 1)[0]
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    if path.name == "__init__.py":
+        return module.rsplit(".", 1)[0], True
+    return module, False
+
+
+def _imports(source: str, module: str, is_package: bool):
+    """(imported module, line) of every import in `source` (the text of `module`), relative
+    imports resolved."""
+    for node in ast.walk(ast.parse(source)):
         if isinstance(node, ast.ImportFrom):
             if node.level:
                 base = module.split(".")
@@ -44,6 +49,22 @@ def _imports(path: Path):
                 yield alias.name, node.lineno
 
 
+def _violations(source: str, module: str, is_package: bool = False) -> list[str]:
+    """The imports in `source` (module `module`) that run back up LAYERS, and imports by name."""
+    rank = {name: k for k, name in enumerate(LAYERS)}
+    origin = _package(module)
+    found = []
+    for target, line in _imports(source, module, is_package):
+        if not target.startswith("iesm_agent."):
+            continue
+        dest = _package(target)
+        if origin in rank and dest in rank and rank[dest] > rank[origin]:
+            found.append(f"{module}:{line} ({origin}) imports {target} ({dest})")
+    if "import_module(" in source or "__import__(" in source:
+        found.append(f"{module} imports a module by name")
+    return found
+
+
 def test_every_package_is_placed_in_the_layer_order():
     packages = {p.stem if p.is_file() else p.name for p in ROOT.iterdir()
                 if (p.suffix == ".py" and p.stem != "__init__") or (p / "__init__.py").is_file()}
@@ -51,28 +72,15 @@ def test_every_package_is_placed_in_the_layer_order():
 
 
 def test_no_import_runs_back_up_the_pipeline():
-    rank = {name: k for k, name in enumerate(LAYERS)}
-    upward = []
-    for path in ROOT.rglob("*.py"):
-        source = _package(".".join(path.relative_to(ROOT.parent).with_suffix("").parts))
-        for target, line in _imports(path):
-            if not target.startswith("iesm_agent."):
-                continue
-            dest = _package(target)
-            if source in rank and dest in rank and rank[dest] > rank[source]:
-                upward.append(f"{path.relative_to(ROOT)}:{line} ({source}) imports {target} ({dest})")
-        text = path.read_text(encoding="utf-8")
-        if "import_module(" in text or "__import__(" in text:
-            upward.append(f"{path.relative_to(ROOT)} imports a module by name")
+    upward = [v for path in ROOT.rglob("*.py")
+              for v in _violations(path.read_text(encoding="utf-8"), *_module_of(path))]
     assert not upward, "\n".join(upward)
 
 
-def test_the_layer_check_sees_an_upward_import(tmp_path):
-    """The check itself: an import from a stage to evals is reported."""
-    bad = ROOT / "mapping" / "_layer_probe.py"
-    bad.write_text("from ..evals import metrics\n", encoding="utf-8")
-    try:
-        found = [t for t, _ in _imports(bad)]
-    finally:
-        bad.unlink()
-    assert found == ["iesm_agent.evals"]
+def test_the_layer_check_reports_an_upward_import_and_an_import_by_name():
+    """The check itself, on source text placed in the mapping stage."""
+    assert _violations("from ..evals import metrics\n", "iesm_agent.mapping.probe") == [
+        "iesm_agent.mapping.probe:1 (mapping) imports iesm_agent.evals (evals)"]
+    assert _violations("from ..store import model\n", "iesm_agent.mapping.probe") == []
+    assert _violations("import importlib\nimportlib.import_module('iesm_agent.evals')\n",
+                       "iesm_agent.mapping.probe") == ["iesm_agent.mapping.probe imports a module by name"]

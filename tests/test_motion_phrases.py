@@ -21,7 +21,7 @@ def retriever():
 MOTION = [("make your way over to the bookshelf, thanks", "bookshelf"),
           ("could you pull up to the desk", "desk"),
           ("stop by the refrigerator for me", "refrigerator"),
-          ("come round to the bed", "bed"),
+          ("pop round to the bed", "bed"),
           ("walk up to the wardrobe", "wardrobe"),
           ("zip over to the printer", "printer"),
           ("go sit by the bathtub", "bathtub"),
@@ -71,7 +71,7 @@ def test_a_relation_after_a_motion_phrase_is_still_read():
 
 def test_motion_words_leave_the_query_reading():
     """The shape "round", the function "sit" and an unknown verb are motion here, not content."""
-    for query, label in (("come round to the bed", "bed"), ("go sit by the bathtub", "bathtub"),
+    for query, label in (("pop round to the bed", "bed"), ("go sit by the bathtub", "bathtub"),
                          ("zip over to the printer", "printer")):
         info = analyse_query(query)
         assert info.targets == {label: 1.0} and not info.attrs and not info.afford, query
@@ -91,7 +91,6 @@ def test_misspellings_are_read_as_the_word_they_miss():
     for query, label in (("the refridgerator", "refrigerator"), ("the washbassin", "sink"),
                          ("the wardrobbe in the bedrom", "wardrobe")):
         assert label in analyse_query(query).targets, query
-    assert analyse_query("a bit of light").targets.keys() == analyse_query("a bit of light").targets.keys()
     assert load_lexicon().correct("bit") == "bit"     # an English word is never corrected
 
 

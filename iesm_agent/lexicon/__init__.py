@@ -54,7 +54,7 @@ class Lexicon:
     vocab: frozenset[str]
     cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
-    _correction_cache: dict[tuple[str, frozenset[str]], str] = field(default_factory=dict, repr=False)
+    _correction_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _targets: frozenset[str] | None = field(default=None, repr=False)
 
     # -- tokens -----------------------------------------------------------------------------
@@ -81,25 +81,23 @@ class Lexicon:
                 out.append(tok)
         return out
 
-    def correct(self, token: str, extra: frozenset[str] = frozenset()) -> str:
-        """`token`, or the lexicon word (or word of `extra`, such as the map's labels) it misspells:
+    def correct(self, token: str) -> str:
+        """`token`, or the lexicon word it misspells:
         one edit away (insertion, deletion, substitution or transposition of neighbours) for words of
         4 to 6 letters, two for longer ones (keeping the first letter), the closest when it is
         unique, preferring words with the same first letter. Known words, English
         words (`english_words.txt`) and short or non-alphabetic tokens are never changed."""
         if len(token) < 4 or not token.isalpha() or token in self.vocab or token in self.lemmas \
-                or token in _english() or token in extra or self.lemma(token) in self.vocab:
+                or token in _english() or self.lemma(token) in self.vocab:
             return token
-        key = (token, extra)
-        hit = self._correction_cache.get(key)
+        hit = self._correction_cache.get(token)
         if hit is not None:
             return hit
         from rapidfuzz.distance import OSA
         from rapidfuzz.process import extract
 
         limit = 1 if len(token) < 7 else 2
-        choices = self._spelling_targets | extra
-        found = extract(token, choices, scorer=OSA.distance, score_cutoff=limit, limit=6)
+        found = extract(token, self._spelling_targets, scorer=OSA.distance, score_cutoff=limit, limit=6)
         # two edits only keep the first letter (people rarely mistype it: "cubbard" is a
         # cupboard, "scullery" no cutlery); among equally close words, those keeping it first
         found = [(w, d) for w, d, _ in found if d < 2 or w[0] == token[0]]
@@ -109,15 +107,15 @@ class Lexicon:
         # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
         best = min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
         if len(self._correction_cache) < 100_000:
-            self._correction_cache[key] = best
+            self._correction_cache[token] = best
         return best
 
-    def spell(self, tokens: list[str], extra: frozenset[str] = frozenset()) -> list[str]:
+    def spell(self, tokens: list[str]) -> list[str]:
         """`tokens` with misspellings corrected (`correct`) and run-together phrases the lexicon
         knows split ("livingroom" -> living room)."""
         out: list[str] = []
         for token in tokens:
-            fixed = self.correct(token, extra)
+            fixed = self.correct(token)
             out.extend(self._split(fixed) if fixed == token else [fixed])
         return out
 

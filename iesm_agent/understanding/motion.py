@@ -15,7 +15,7 @@ MOTION_VERBS = frozenset({
 #: verbs of posture that chain after a motion verb ("go stand next to", "come sit by"): verbs there,
 #: never the category nouns they spell ("stand") nor the function asked for ("sit")
 POSTURE_VERBS = frozenset({"stand", "sit", "wait", "park", "stay", "hover", "look", "hang", "settle"})
-#: words a motion verb used as a verb follows (or it starts the query): "could you head over",
+#: words a motion verb used as a verb follows (or it starts the query): "can you nip over",
 #: "please swing by"; after anything else it is a noun ("rest my head on")
 VERB_OPENERS = frozenset({"you", "please", "to", "and", "then", "now", "just", "can", "could", "would", "will", "i",
                           "we", "let's", "lets", "me", "us", "kindly", "pls", "ok", "okay", "hey", "robot", "so",
@@ -55,7 +55,7 @@ def is_destination(toks: list[str], i: int, n: int) -> bool:
 def strip_motion(toks: list[str]) -> list[str]:
     """`toks` without the motion phrases that only say where to go: a motion verb with its object,
     a chained posture verb, its particle and destination preposition ("make your way over to",
-    "go sit by", "come round to"); a verb without a particle or preposition after it stays."""
+    "go sit by", "pop round to"); a verb without a particle or preposition after it stays."""
     drop: set[int] = set()
     i = 0
     while i < len(toks):

@@ -83,37 +83,43 @@ _CONJUNCTIONS = frozenset({"and", "or", "nor", "plus"})
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
 
 
-def _names_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], head: Span | None) -> bool:
-    """A room word directly before a noun other than the target's ("the office papers") modifies
-    that noun; before the target ("the office bookcase") it says where the target is."""
+def _next_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span]) -> Span | bool:
+    """What directly follows `span`: the category span starting there, True for a content word
+    no lexicon phrase covers (a noun the lexicon does not know), False for anything else."""
     nxt = span.end
-    if nxt >= len(lemmas) or (head is not None and nxt == head.start):
+    if nxt in categories:
+        return categories[nxt]
+    if nxt >= len(lemmas) or any(s.start <= nxt < s.end for s in categories.values()):
         return False
-    if span.start > 0 and lemmas[span.start - 1] in _PLACE_PREPOSITIONS | {"at"}:
-        return False  # "in the bedroom, bound in leather": a place phrase names the target's room
-    if nxt in covered:  # another category, unless it leads to the target ("the bathroom sink cabinet")
-        other = next((sp for sp in lex.scan(lemmas[nxt:nxt + lex.max_len]) if sp.start == 0 and sp.has("cat")), None)
-        return other is not None and not (head is not None and nxt + other.end == head.start)
     word = lemmas[nxt]
     stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
-    return word.isalpha() and len(word) > 2 and word not in stop
+    return word.isalpha() and len(word) > 2 and word not in stop and not lex.phrases.get((word,))
 
 
-def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, covered: set[int], end: int) -> bool:
+def _names_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span],
+                      head: Span | None) -> bool:
+    """A room word directly before a noun other than the target's ("the office papers") modifies
+    that noun; before the target ("the office bookcase"), or in a chain leading to it ("the
+    bathroom sink cabinet"), or in a place phrase ("in the bedroom") it says where the target is."""
+    if span.start > 0 and lemmas[span.start - 1] in _PLACE_PREPOSITIONS | {"at"}:
+        return False
+    nxt = _next_noun(lex, lemmas, span, categories)
+    if isinstance(nxt, Span):
+        return nxt is not head and not (head is not None and nxt.end == head.start)
+    return nxt
+
+
+def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span], end: int) -> bool:
     """An attribute outside the target phrase directly before another noun describes that noun,
     not the target: a landmark ("beside the tall wardrobe") or a noun the lexicon does not know
-    ("hang my wet coat")."""
-    nxt = span.end
-    if span.start < end or nxt >= len(lemmas):
+    ("hang my wet coat"); after "with" or "and" it is still the target's ("the mug with the blue
+    handle", "the oak and steel shelf")."""
+    if span.start < end:
         return False
     governor = next((lemmas[i] for i in range(span.start - 1, -1, -1) if lemmas[i] in lex.words["boundaries"]), None)
     if governor is None or governor in _PART_WORDS or governor in _CONJUNCTIONS:
-        return False  # "the mug with the blue handle", "the oak and steel shelf": the target's
-    if nxt in covered:  # "beside the tall wardrobe": the landmark's size
-        return any(sp.start == 0 and sp.has("cat") for sp in lex.scan(lemmas[nxt:nxt + lex.max_len]))
-    word = lemmas[nxt]
-    stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
-    return word.isalpha() and len(word) > 2 and word not in stop
+        return False
+    return bool(_next_noun(lex, lemmas, span, categories))
 
 
 _SENTENCE_END = re.compile(r"[.?!;]+(?:\s+|$)")
@@ -210,6 +216,7 @@ def analyse_query(text: str) -> QueryInfo:
     surface = [t for t in tokens if t not in skip]
     lemmas = lemmatise(lex, surface)
     spans = lex.scan(lemmas)
+    categories = {sp.start: sp for sp in spans if sp.has("cat")}
     info = QueryInfo(text=text)
     if ruled_out is not None:
         info.excluded_targets = frozenset(ruled_out.targets)
@@ -250,14 +257,14 @@ def analyse_query(text: str) -> QueryInfo:
             _add_entry(afford, lex.generic[info.generic], 1.0)
             continue
         if s.has("room") and not (in_target and s.has("cat")):
-            if _names_other_noun(lex, lemmas, s, covered, head):
+            if _names_other_noun(lex, lemmas, s, categories, head):
                 continue  # "a case for the office papers": the papers' room, not the target's
             for r in s.values("room"):
                 info.rooms[r] = 1.0
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr and not s.has("cue") and _modifies_other_noun(lex, lemmas, s, covered, end):
+        if attr and not s.has("cue") and _modifies_other_noun(lex, lemmas, s, categories, end):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
         if attr:
