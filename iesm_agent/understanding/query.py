@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
 from .text import Slot, lemmatise, modifier_spans, read_slots, stem
 
@@ -227,6 +228,11 @@ def analyse_query(text: str) -> QueryInfo:
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
     if lemmas and lemmas[0] in bounds:
         end = 0
+    # or where a clause about a landmark begins ("the cabinet the printer sits on"): what that
+    # clause's verb does is the landmark's business, not the target's use
+    clause = _landmark_clauses(surface, categories, clause_final_words(request))
+    if clause:
+        end = min(end, min(clause))
     covered: set[int] = set()
     for s in spans:
         covered.update(range(s.start, s.end))
@@ -271,7 +277,7 @@ def analyse_query(text: str) -> QueryInfo:
             attr_spans.append(s)
         if attr and not s.has("cue"):
             continue
-        if s.has("cue"):
+        if s.has("cue") and s.start not in clause:
             scale = 1.0 if s.end - s.start > 1 else 0.8
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], scale)
@@ -353,6 +359,18 @@ def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: f
     words = [surface[i] for i in range(start, end)
              if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()]
     return " ".join(words) or None
+
+
+def _landmark_clauses(surface: list[str], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
+    """Token positions of relative clauses about a landmark whose preposition is stranded: from
+    the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
+    out: set[int] = set()
+    for k, token in enumerate(surface):
+        if token in STRANDABLE and is_stranded(surface, k + 1, finals):
+            start = clause_landmark(categories, surface, k)
+            if start is not None:
+                out.update(range(start, k + 1))
+    return out
 
 
 def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..lexicon import load_lexicon
+from .clauses import INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .query import analyse_query
 from .text import lemmatise
@@ -44,8 +45,6 @@ SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "s
 #: "on" after these verbs states a use, not a place ("where can I work on my computer")
 _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
               "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
-#: nouns standing for an unnamed target ("the one by the door", "the thing on the shelf")
-_TARGET_PRONOUNS = {"one", "ones", "thing", "things", "something", "object", "item", "stuff", "whatever"}
 _INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
 
 
@@ -95,6 +94,7 @@ def parse_query(text: str) -> SpatialQuery:
               # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
               and not (s.end - s.start == 1 and toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start])}
     attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+    finals = clause_final_words(text)
     out = SpatialQuery()
     used: set[int] = set()  # starts of cat spans taken as landmarks
 
@@ -160,6 +160,18 @@ def parse_query(text: str) -> SpatialQuery:
         if is_destination(toks, i, len(words)):
             i += len(words)
             continue  # "head over to", "stop by", "walk up to": where to go, not a relation
+        if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), finals):
+            j = clause_landmark(cat_at, toks, i)
+            owner = next((r for r in out.relations if j in taken.get(id(r), ())), None)
+            if j is not None and (j not in used or (owner is not None and owner.kind == "with")):
+                if owner is not None:  # "with a lamp next to it": one fact, the clause says which way
+                    out.relations.remove(owner)
+                    used.discard(j)
+                rel = Relation(INVERSE_RELATION[kind])
+                landmark(rel, j)  # "the cabinet the printer sits on": the printer, seen from the cabinet
+                out.relations.append(rel)
+                i += len(words)
+                continue
         i += len(words)
         if kind == "on" and nxt in ("left", "right", "top"):
             continue  # "on the left": the side word is the relation
@@ -242,7 +254,7 @@ def parse_query(text: str) -> SpatialQuery:
     if target is not None and target > 0 and toks[target - 1] == "for":
         target = None
     info = analyse_query(text)
-    if target is None and not info.unknown_target and not _TARGET_PRONOUNS & set(toks) and out.relations:
+    if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
         # a relation needs a target and a distinct landmark: when the only thing named was read as
         # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
         first = next((r for r in out.relations if taken.get(id(r))), None)

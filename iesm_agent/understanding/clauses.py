@@ -1,0 +1,74 @@
+"""Relative clauses whose preposition has no object of its own ("the cabinet the printer sits on",
+"the sink with the mirror above it", "the one the clock hangs over"): the noun inside the clause
+is the landmark, the noun before it the target, and the relation points from the landmark to the
+target. Shared by the query reading (`query`: where the target phrase ends) and the spatial
+reading (`spatial`: which noun is the landmark and which way the relation goes)."""
+
+from __future__ import annotations
+
+import re
+
+from ..lexicon import Span
+
+#: pronouns that stand for the target inside its own relative clause ("... with a lamp next to it")
+BACK_REFERENCES = frozenset({"it", "them", "itself", "themselves"})
+#: prepositions a relative clause can leave at its end ("the shelf the vase stands on")
+STRANDABLE = frozenset({"on", "onto", "atop", "under", "underneath", "beneath", "below", "above", "over", "by",
+                        "beside", "near", "to", "of", "behind", "against", "opposite"})
+#: nouns standing for an unnamed target ("the one by the door", "the thing on the shelf")
+TARGET_PRONOUNS = frozenset({"one", "ones", "thing", "things", "something", "object", "item", "stuff", "whatever"})
+#: most words between the clause's noun and its relation ("is sitting on top of", "has been hung above")
+MAX_VERB_WORDS = 3
+#: nouns inside multi-word relations ("on top of", "to the left of", "next to", "close to")
+RELATION_NOUNS = frozenset({"top", "bottom", "side", "left", "right", "front", "back", "next", "close", "near"})
+#: the relation seen from the target: the printer is on the cabinet, so the cabinet is what the
+#: printer rests on ("with"); the clock is above the window, so the window is below the clock
+INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "below", "near": "near",
+                    "left": "right", "right": "left", "front": "behind", "behind": "front", "opposite": "opposite"}
+
+#: words between a clause's noun and its preposition that are not verb forms ("is", "has been",
+#: "right above", "hung")
+_AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "has", "have", "had", "right", "just",
+                          "directly", "usually", "always", "still", "now", "normally", "hung", "sat", "put", "set",
+                          "kept", "lay", "laid", "stuck", "stood", "leant"})
+
+_CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
+
+
+def _verb_like(word: str) -> bool:
+    """True for auxiliaries, adverbs of the clause and inflected verb forms ("sits", "mounted")."""
+    return word in _AUXILIARIES or word.endswith(("ed", "ing")) or (word.endswith("s") and not word.endswith("ss"))
+
+
+def clause_final_words(text: str) -> frozenset[str]:
+    """Lowercase words that end a clause of `text` (followed by punctuation, a dash or the end)."""
+    return frozenset(m.group(1).lower() for m in _CLAUSE_END.finditer(text))
+
+
+#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
+SIDE_NOUNS = frozenset({"left", "right", "front"})
+
+
+def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
+    """True when the preposition ending at `toks[end - 1]` has no object: the clause ends there or a
+    pronoun for the target follows ("on it", "to the left of it")."""
+    if toks[end - 1] in SIDE_NOUNS:
+        if end >= len(toks) or toks[end] != "of":
+            return False
+        end += 1  # "to the left of it"
+    return end >= len(toks) or toks[end] in BACK_REFERENCES or toks[end - 1] in finals
+
+
+def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int) -> int | None:
+    """Start of the category phrase a stranded preposition at `toks[cue_start]` relates to: the
+    last one ending at most `MAX_VERB_WORDS` words before it, when a target comes before that
+    phrase (another category phrase, or "the one"). `categories` maps token starts to spans."""
+    while cue_start > 0 and (toks[cue_start - 1] in STRANDABLE or toks[cue_start - 1] in RELATION_NOUNS):
+        cue_start -= 1  # the relation's first word: "on top of", "to the left of", "next to"
+    before = sorted(s for s, span in categories.items() if span.end <= cue_start)
+    if not before or cue_start - categories[before[-1]].end > MAX_VERB_WORDS:
+        return None
+    last = before[-1]
+    if not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
+        return None  # "the cushion with the pattern on it": the clause's noun is another word
+    return last if len(before) > 1 or TARGET_PRONOUNS.intersection(toks[:last]) else None
