@@ -157,10 +157,88 @@ def run_config(env: dict[str, str], sequential: list[str], concurrent: list[str]
     return out
 
 
+def serve_noop(port_file: str) -> None:
+    """The SDK's floor: an MCP server with one tool that returns "ok", the same transport settings
+    as `iesm serve` (streamable HTTP, JSON responses, loggers at WARNING); writes its port to `port_file`."""
+    import logging
+
+    import uvicorn
+    from mcp.server.mcpserver import MCPServer
+
+    logging.disable(logging.INFO)
+    server = MCPServer("noop")
+
+    @server.tool()
+    def ping() -> str:
+        """Return ok."""
+        return "ok"
+
+    config = uvicorn.Config(server.streamable_http_app(streamable_http_path="/mcp", json_response=True,
+                                                      host="127.0.0.1"), log_level="warning", access_log=False)
+    import socket
+    sock = socket.socket()
+    sock.bind(("127.0.0.1", 0))
+    sock.listen(128)
+    Path(port_file).write_text(str(sock.getsockname()[1]))
+    asyncio.run(uvicorn.Server(config).serve(sockets=[sock]))
+
+
+async def noop_bursts(url: str, pid: int, n: int, rounds: int = 5) -> dict[str, float]:
+    """Median over `rounds` bursts of `n` concurrent no-op calls: p50 ms, server and client CPU ms per call."""
+    from mcp import Client
+
+    async def one(client) -> float:
+        t0 = time.perf_counter()
+        await client.call_tool("ping", {})
+        return (time.perf_counter() - t0) * 1000.0
+
+    p50s, server_ms, client_ms = [], [], []
+    async with Client(url) as client:
+        for _ in range(n):
+            await one(client)  # warm-up
+        for _ in range(rounds):
+            s0, c0 = process_cpu_s(pid), time.process_time()
+            p50s.append(statistics.median(await asyncio.gather(*(one(client) for _ in range(n)))))
+            s1 = process_cpu_s(pid)
+            client_ms.append((time.process_time() - c0) * 1000 / n)
+            server_ms.append(float("nan") if s0 is None or s1 is None else (s1 - s0) * 1000 / n)
+    return {"p50": statistics.median(p50s), "server_cpu_ms": statistics.median(server_ms),
+            "client_cpu_ms": statistics.median(client_ms)}
+
+
+def sdk_floor(n: int) -> dict[str, float]:
+    """Bursts of `n` calls to the no-op server in its own process (this script with --noop-server)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        port_file = Path(tmp) / "port"
+        proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file)],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        try:
+            for _ in range(200):
+                if port_file.is_file() and port_file.read_text():
+                    break
+                time.sleep(0.05)
+            else:
+                raise SystemExit("the no-op MCP server did not start")
+            url = f"http://127.0.0.1:{port_file.read_text()}/mcp"
+            out = asyncio.run(noop_bursts(url, proc.pid, n))
+        finally:
+            proc.terminate()
+            proc.wait(timeout=30)
+    print(f"MCP SDK floor (a tool that returns 'ok'): {n} concurrent calls p50 {out['p50']:.1f} ms; CPU per call: "
+          f"server {out['server_cpu_ms']:.2f} ms, client {out['client_cpu_ms']:.2f} ms")
+    return out
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--concurrent", type=int, default=40)
+    parser.add_argument("--noop-server", metavar="PORT_FILE", help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.noop_server:
+        serve_noop(args.noop_server)
+        return
     env = {**os.environ, "HF_HUB_OFFLINE": "1"}
     env.pop("IESM_TOKEN", None)
     env.pop("IESM_EMBEDDINGS", None)
@@ -172,6 +250,7 @@ def main() -> None:
     full = run_config(env, sequential, concurrent)
     print("offline model on lexicons only (IESM_EMBEDDINGS=0):")
     lex = run_config({**env, "IESM_EMBEDDINGS": "0"}, sequential, concurrent)
+    floor = sdk_floor(args.concurrent)
 
     record("serve_find_goal_p50_ms", full["p50_first"], "ms", "<= 20 ms", full["p50_first"] <= 20,
            note=f"warm server over HTTP, each query asked for the first time; p95 {full['p95_first']:.1f} ms; "
@@ -185,7 +264,12 @@ def main() -> None:
                 f"burst of list_maps (no retrieval) p50 {full['floor_p50']:.0f} ms; lexicons only p50 "
                 f"{lex['burst_p50']:.0f} ms; CPU per call: server "
                 f"{'?' if full['burst_server_cpu_ms'] is None else format(full['burst_server_cpu_ms'], '.1f')} ms, "
-                f"client {full['burst_client_cpu_ms']:.1f} ms")
+                f"client {full['burst_client_cpu_ms']:.1f} ms; the SDK alone (a tool returning 'ok') p50 "
+                f"{floor['p50']:.0f} ms")
+    record("mcp_sdk_floor_40_concurrent_p50_ms", floor["p50"], "ms", "reported", True,
+           note=f"{args.concurrent} calls at once to an MCP server whose only tool returns 'ok' (no iesm code), "
+                f"median of 5 bursts; CPU per call: server {floor['server_cpu_ms']:.2f} ms, "
+                f"client {floor['client_cpu_ms']:.2f} ms")
     record("serve_vs_ask_cold_speedup", full["cold_ms"] / full["warm_ms"], "x", "reported", True,
            note=f"warm find_goal {full['warm_ms']:.1f} ms vs fresh iesm ask {full['cold_ms']:.0f} ms; lexicons only "
                 f"{lex['warm_ms']:.1f} ms vs {lex['cold_ms']:.0f} ms")
