@@ -404,7 +404,7 @@ g(FF, "s", 15, [15], [
     "Head to whichever dining seat is the shortest walk from the fridge.",
 ])
 
-out = open("/work/main/evals/blind/round5.jsonl", "w")
+out = open("/work/main/evals/blind/round5_dev.jsonl", "w")
 for gi, (m, t, target, accept, qs) in enumerate(G, 1):
     for wi, q in enumerate(qs, 1):
         out.write(json.dumps({"id": f"b5-g{gi:02d}-w{wi}", "map": m, "query": q, "type": t,

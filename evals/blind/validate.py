@@ -3,7 +3,7 @@ targets and accepted ids exist in their maps, spatial lines use maps with geomet
 holds WORDINGS distinct wordings of one intent (one type, map, target and accept set). Groups that
 name the exact map label in more than 2 wordings are reported (the writers' own rule).
 
-    python evals/blind/validate.py evals/blind/round5.jsonl [--wordings 6]
+    python evals/blind/validate.py evals/blind/round6.jsonl [--wordings 6]
 
 Reads only the suite and its map JSON files (object lists or the paper's caption dictionaries).
 """
