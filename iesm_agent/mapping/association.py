@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..config import MappingConfig
+from .cells import rowcol_of
 
 
 def phi_geo(inter: np.ndarray, area_a: np.ndarray, area_b: np.ndarray) -> np.ndarray:
@@ -70,3 +71,45 @@ def select_matches(pair_a: np.ndarray, pair_b: np.ndarray, geo: np.ndarray, sem:
     first = np.r_[True, a[1:] != a[:-1]]
     match[a[first]] = b[first]
     return match
+
+
+
+#: a footprint is planar (a wall, a door, a long shelf seen edge-on) when its long axis spreads
+#: this many times more than its short axis (standard deviations)
+PLANAR_ELONGATION = 3.0
+#: two planar footprints whose long axes differ by more than this many degrees meet at a corner
+CORNER_DEG = 45.0
+
+
+def planar_axis(keys: np.ndarray) -> np.ndarray | None:
+    """Unit long axis (2,) in (col, row) cell units of a top-down mask (sorted cell keys), or None
+    when the mask is not planar (elongation under PLANAR_ELONGATION, or fewer than 3 cells)."""
+    if len(keys) < 3:
+        return None
+    rows, cols = rowcol_of(keys)
+    pts = np.stack([cols, rows]).astype(np.float64)
+    var, vec = np.linalg.eigh(np.cov(pts))
+    if var[1] < PLANAR_ELONGATION ** 2 * max(var[0], 1e-9):
+        return None
+    return vec[:, 1]
+
+
+def meet_at_corner(keys_a: np.ndarray, keys_b: np.ndarray) -> bool:
+    """Whether two top-down masks are both planar with long axes more than CORNER_DEG apart (two
+    walls meeting at an L or T, not one wall in two stretches)."""
+    a, b = planar_axis(keys_a), planar_axis(keys_b)
+    return a is not None and b is not None and abs(float(a @ b)) < np.cos(np.radians(CORNER_DEG))
+
+
+def continuous_link(keys: np.ndarray, entries: np.ndarray, sem: np.ndarray, entry_keys: list[np.ndarray],
+                    cfg: MappingConfig) -> int:
+    """The entry that continues mask `keys` (sorted cell keys), or -1. `entries` (n,) are the
+    entries whose masks touch it (within `cfg.continuity_gap`), `sem` (n,) their cosines with it,
+    `entry_keys` every entry's cell keys. The entry of largest cosine above
+    `cfg.delta_sem_continuous` (ties: lower index) that does not `meet_at_corner` with the mask."""
+    ok = sem > cfg.delta_sem_continuous
+    e, s = np.asarray(entries)[ok], sem[ok]
+    for j in e[np.lexsort((e, -s))].tolist():
+        if not meet_at_corner(keys, entry_keys[j]):
+            return int(j)
+    return -1

@@ -50,8 +50,10 @@ class MapBuilder:
         before, merges = len(d), 0
         if second_pass:
             d, merges = d.second_pass()
+        d, continuous = d.merge_continuous()
         meta = {"frames": str(self.n_frames), "second_pass": str(second_pass).lower(),
-                "instances_first_pass": str(before), "second_pass_merges": str(merges)}
+                "instances_first_pass": str(before), "second_pass_merges": str(merges),
+                "continuity_merges": str(continuous)}
         return to_scene_map(d, categories, category_embeddings, cell_size=self.cfg.cell_size, scene_id=scene_id,
                             embedding_space=embedding_space, meta=meta)
 
