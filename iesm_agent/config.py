@@ -21,11 +21,12 @@ class MappingConfig(BaseModel):
     `delta_sem_weak` (not in the paper; on by default at 0.7 / 0.6, set on tuning seeds 0-4, see
     docs/results.md; `paper()` turns it off); `continuity_gap` (m, None = off) and
     `delta_sem_continuous` (cosine): after association, entries whose top-down masks touch (cells
-    at most `continuity_gap` apart) and whose cosine exceeds `delta_sem_continuous` are fused unless
-    they are two planar footprints meeting at a corner (`InstanceDictionary.merge_continuous`; not in the
-    paper, on by default at 0 m / 0.7, the cosine that misclassifies the fewest touching pairs of
-    built instances as same / different object on tuning seeds 0-4, see docs/results.md; `paper()`
-    turns it off); `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
+    at most `continuity_gap` apart), whose cosine exceeds `delta_sem_continuous` and whose shapes
+    continue each other (`mapping.association.continues`: collinear planar stretches, or a planar and
+    a compact piece) are fused (`InstanceDictionary.merge_continuous`; not in the paper; on by
+    default at 0 m / 0.7, the cosine that misclassifies the fewest touching pairs of built instances
+    as same / different object on tuning seeds 0-4, see docs/results.md; `paper()` turns it off);
+    `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
     are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
     above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
     share of instances (smallest top-down area) whose categories count as small objects."""
