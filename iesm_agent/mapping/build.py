@@ -1,6 +1,7 @@
 """The mapping pipeline over a frame set (paper Sec. 3.1): per frame, project the candidates
 top-down, associate and fuse them into the instance dictionary; then the optional second
-pass, categorisation against the scene's category list, and the 2.5D `SceneMap`."""
+pass, the continuity merge (`MappingConfig.continuity_gap`, off in `paper()`), categorisation
+against the scene's category list, and the 2.5D `SceneMap`."""
 
 from __future__ import annotations
 

@@ -1,5 +1,6 @@
-"""The instance dictionary I^exist: association against it, fusion into it, and the second
-association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion").
+"""The instance dictionary I^exist: association against it, fusion into it, the second
+association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion") and the
+continuity merge of touching stretches of one object (not in the paper, `merge_continuous`).
 
 Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
 the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
