@@ -21,7 +21,6 @@ from typing import Sequence
 
 import numpy as np
 
-from ..frames import FrameSet
 from .generate import GenerationResult, generate_suite
 from .mapping import observed_masks
 from .suite import SuiteQuery, write_suite
@@ -74,7 +73,7 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
     map_path = resolve_map_path(built_map)
     scene = open_map(map_path)
     gt = GroundTruth.load(frames_dir)
-    observed = observed_masks(FrameSet.open(frames_dir), gt)
+    observed = observed_masks(frames_dir, gt)
     seen = set(np.unique(observed[1]).tolist()) if observed is not None else {int(o["id"]) for o in gt.objects}
     known = set(ObjectSpec.model_fields)
     objects = [{k: v for k, v in o.items() if k in known} for o in gt.objects if int(o["id"]) in seen]

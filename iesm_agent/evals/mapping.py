@@ -74,7 +74,7 @@ class EvalContext:
         categories, e = category_vectors(frames)
         index = {c.lower(): j for j, c in enumerate(categories)}
         labels = {int(o["id"]): str(o["label"]) for o in gt.objects}
-        observed = observed_masks(frames, gt, cfg)
+        observed = observed_masks(frames_dir, gt, cfg)
         flat, ids, top = observed if observed is not None else gt.cells.entries()
         keep_ids = np.array(sorted(set(labels) & set(np.unique(ids).tolist())), np.int64)
         if footprint == "full":
@@ -160,13 +160,17 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, ex
     return (*merged.entries(), counts)
 
 
-def observed_masks(frames: FrameSet, gt: GroundTruth, cfg: MappingConfig | None = None
+def observed_masks(frames_dir: str | Path, gt: GroundTruth, cfg: MappingConfig | None = None
                    ) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """The observed footprints of the objects seen in at least `cfg.min_mask_pixels` pixels, as
-    (flat cell in `gt.grid`, gt id, top m) entries, from `observed_footprints` with the exact depth
-    of DIR/gt/depth; None when no frame has an instance image."""
+    (flat cell in `gt.grid`, gt id, top m) entries, from `observed_footprints` of the frames in
+    `frames_dir` with the exact depth of DIR/gt/depth; None when `frames_dir` holds no frames
+    (no scene.json: a ground truth alone) or no frame has an instance image."""
     cfg = cfg or MappingConfig()
-    observed = observed_footprints(frames, gt.grid, cfg, frames.directory / "gt" / "depth")
+    frames_dir = Path(frames_dir)
+    if not (frames_dir / "scene.json").is_file():
+        return None
+    observed = observed_footprints(FrameSet.open(frames_dir), gt.grid, cfg, frames_dir / "gt" / "depth")
     if observed is None:
         return None
     flat, ids, top, counts = observed
