@@ -19,7 +19,14 @@ class MappingConfig(BaseModel):
     `delta_geo_strong` (max-overlap, 0-1, None = off) and `delta_sem_weak` (cosine): a pair whose
     top-down masks overlap more than `delta_geo_strong` also links when its cosine exceeds
     `delta_sem_weak` (not in the paper; on by default at 0.7 / 0.6, set on tuning seeds 0-4, see
-    docs/results.md; `paper()` turns it off); `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
+    docs/results.md; `paper()` turns it off); `continuity_gap` (m, None = off) and
+    `delta_sem_continuous` (cosine): after association, entries whose top-down masks touch (cells
+    at most `continuity_gap` apart), whose cosine exceeds `delta_sem_continuous` and whose shapes
+    continue each other (`mapping.association.continues`: collinear planar stretches, or a planar and
+    a compact piece) are fused (`InstanceDictionary.merge_continuous`; not in the paper; on by
+    default at 0 m / 0.7, the cosine that misclassifies the fewest touching pairs of built instances
+    as same / different object on tuning seeds 0-4, see docs/results.md; `paper()` turns it off);
+    `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
     are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
     above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
     share of instances (smallest top-down area) whose categories count as small objects."""
@@ -32,6 +39,8 @@ class MappingConfig(BaseModel):
     w_sem: float = 0.3
     delta_geo_strong: Optional[float] = Field(0.7, gt=0, le=1)
     delta_sem_weak: float = Field(0.6, ge=-1, le=1)
+    continuity_gap: Optional[float] = Field(0.0, ge=0)
+    delta_sem_continuous: float = Field(0.7, ge=-1, le=1)
     cell_size: float = Field(0.05, gt=0)
     min_mask_pixels: int = Field(20, ge=1)
     max_depth: float = Field(10.0, gt=0)
@@ -41,7 +50,7 @@ class MappingConfig(BaseModel):
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
         """The paper's association alone (both thresholds on every pair, no strong-overlap link)."""
-        return cls(**{"delta_geo_strong": None, **values})
+        return cls(**{"delta_geo_strong": None, "continuity_gap": None, **values})
 
 
 class RetrievalConfig(BaseModel):

@@ -197,3 +197,32 @@ def test_a_segmenter_replaces_missing_seg_files(tiny, tmp_path):
 
     with pytest.raises(IesmError, match="seg.npz"):
         build_map(frames)
+
+
+def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
+    import asyncio
+    import shutil
+
+    from iesm_agent.evals.gt_queries import generate_gt_suite
+    from iesm_agent.evals.matching import match_instances
+
+    frames = tmp_path / "frames"
+    shutil.copytree(tiny, frames)
+    gt = GroundTruth.load(frames)
+    # a sofa behind the camera's path: in the object list, never in a frame
+    gt.objects.append({"id": 4, "label": "sofa", "center": [3.2, 2.2, 0.4], "size": [0.4, 0.4, 0.8],
+                       "structural": False, "on": None, "room": 1})
+    gt.save(frames)
+    built = tmp_path / "tiny.iesm"
+    assert run(["build-map", str(frames), "-o", str(built)]) == 0
+    scene = load_map(built)
+    by_label = {i.label: i.id for i in scene.instances}
+    # paired on the observed footprints: the table's cells under the cup are not the table's
+    assert match_instances(scene, gt, frames_dir=frames) == {1: by_label["table"], 2: by_label["cup"],
+                                                              3: by_label["chair"]}
+    # a ground truth without frames is matched on the box footprints
+    assert match_instances(scene, gt, frames_dir=tmp_path) == match_instances(scene, gt)
+    result, dropped = asyncio.run(generate_gt_suite(str(built), frames, tmp_path / "s.jsonl", ["o"], per_type=10))
+    assert dropped == 0 and result.queries
+    assert {q.target for q in result.queries} <= set(by_label.values())
+    assert not any("sofa" in q.query for q in result.queries)

@@ -70,3 +70,28 @@ def test_rooms_table_first_seed_walled(scene):
     now = score_scene(frames, cache.built(frames), seed)
     for method in ("baseline", "lsd", "split"):
         assert now[method]["miou"] == pytest.approx(committed[method]["miou"], abs=1e-9), method
+
+
+def test_retrieval_table_first_seed(scene, tmp_path):
+    from iesm_agent.evals.studies.retrieval import METHODS, score_scene
+
+    seed, _cache, frames = scene
+    committed = _summary("retrieval-realistic")["scenes"][0]
+    assert committed["seed"] == seed
+    now = score_scene(frames, seed, tmp_path)
+    assert (now["queries"], now["dropped"]) == (committed["queries"], committed["dropped"])
+    for method in METHODS:
+        assert now[method]["osr_all"] == pytest.approx(committed[method]["osr_all"], abs=1e-9), method
+        assert now[method]["nsr"] == pytest.approx(committed[method]["nsr"], abs=1e-9), method
+
+
+def test_storage_table_first_seed(scene, tmp_path):
+    from iesm_agent.evals.studies.storage import measure_scene
+
+    seed, _cache, frames = scene
+    committed = _summary("storage-realistic")["scenes"][0]
+    assert committed["seed"] == seed
+    now = measure_scene(frames, seed, tmp_path / "map.iesm")
+    for key in ("instances", "observed_cells", "voxels", "vlmaps", "hovsg"):
+        assert now[key] == committed[key], key
+    assert now["ours"] == pytest.approx(committed["ours"], rel=0.01)

@@ -1,7 +1,7 @@
 """Caption quality against simulator ground truth (the `captions` section of `iesm eval-map`).
 
-Built instances are paired with ground-truth objects by `mapping.matching.match_instances`
-(top-down IoU > 0.5); only pairs whose built instance was seen in at least `MIN_FRAMES` frames
+Built instances are paired with ground-truth objects by `evals.matching.match_instances`
+(top-down IoU > 0.5, against the observed footprints when the frame directory is given); only pairs whose built instance was seen in at least `MIN_FRAMES` frames
 count. Two colour scores:
 * `colour_acc`: the caption's colour is in the same colour family as the ground truth's, as the
   lexicon reads them (navy blue ~ navy, light grey ~ grey, dark brown ~ brown, tan ~ beige);
@@ -29,13 +29,13 @@ def _gt_colour(obj: dict) -> Optional[str]:
     return name
 
 
-def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES) -> dict:
+def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES, frames_dir: Optional[Path] = None) -> dict:
     """{"colour_acc", "colour_name_acc", "n", "min_frames"} of the map's caption colours
     (accuracies None when no instance qualifies)."""
     from ..captioning.views import frames_seen
     from .matching import match_instances
 
-    matched = match_instances(scene, gt)
+    matched = match_instances(scene, gt, frames_dir=frames_dir)
     seen = (frames_seen(scene.observations) if scene.observations is not None
             else {i.id: len(i.frames) for i in scene.instances})
     objects = {int(o["id"]): o for o in gt.objects}
@@ -65,4 +65,4 @@ def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:
 
         scene = caption_map(scene, frames_dir, OfflineCaptioner())
         source = "offline (run by eval-map)"
-    return {"captions": {**colour_scores(scene, gt), "source": source}}
+    return {"captions": {**colour_scores(scene, gt, frames_dir=frames_dir), "source": source}}

@@ -1,9 +1,12 @@
 """Query suites for a built map written from ground truth (`iesm gen-queries MAP --gt DIR`).
 
-Queries are generated from gt/objects.json (imported in memory as an object-list map, so the
-built map's own labels never leak into the queries), then each query's target and accepted ids
-are translated to built-map ids with `match_instances` (top-down IoU > 0.5). A query whose
-target has no match is dropped; accepted ids without a match are left out. Each query gets a
+Queries are generated from the objects of gt/objects.json that the frames show (seen in at least
+`min_mask_pixels` pixels of the instance images; all objects when there are none), imported in
+memory as an object-list map so the built map's own labels never leak into the queries. Each
+query's target and accepted ids are translated to built-map ids with `match_instances` against the
+observed footprints (top-down IoU > 0.5, as the mapping table's first ground truth). A query whose
+target has no match (an object the map does not hold as an instance of its own) is dropped;
+accepted ids without a match are left out. Each query gets a
 seeded random robot start (x, y) in metres on free ground-truth floor, so `iesm eval` can report
 N-SR on the map.
 """
@@ -19,6 +22,7 @@ from typing import Sequence
 import numpy as np
 
 from .generate import GenerationResult, generate_suite
+from .mapping import observed_masks
 from .suite import SuiteQuery, write_suite
 from ..sim.ground_truth import GroundTruth
 from ..store import open_map
@@ -64,20 +68,22 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
                             id_prefix: str = "") -> tuple[GenerationResult, int]:
     """Write a suite for `built_map` whose queries come from the ground truth in `frames_dir`
     (`paraphrases`, `id_prefix` as in `generate_suite`); returns the generation result and the
-    number of queries dropped (no matched target)."""
+    number of queries dropped (no matched target); objects the frames never show are not targets."""
     out = Path(out)
     map_path = resolve_map_path(built_map)
     scene = open_map(map_path)
     gt = GroundTruth.load(frames_dir)
+    observed = observed_masks(frames_dir, gt)
+    seen = set(np.unique(observed[1]).tolist()) if observed is not None else {int(o["id"]) for o in gt.objects}
     known = set(ObjectSpec.model_fields)
-    objects = [{k: v for k, v in o.items() if k in known} for o in gt.objects]
+    objects = [{k: v for k, v in o.items() if k in known} for o in gt.objects if int(o["id"]) in seen]
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / f"{gt.scene_id}_gt.json"
         src.write_text(json.dumps({"scene_id": gt.scene_id, "rooms": gt.rooms_list or None, "objects": objects}))
         result = await generate_suite([str(src)], Path(tmp) / "suite.jsonl", types, per_type=per_type, seed=seed,
                                       model=model, paraphrases=paraphrases, id_prefix=id_prefix)
     ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
-    queries, dropped = translate(result.queries, match_instances(scene, gt), ref)
+    queries, dropped = translate(result.queries, match_instances(scene, gt, frames_dir=frames_dir), ref)
     starts = free_starts(gt, len(queries), seed)
     if starts:
         queries = [q.model_copy(update={"start": start}) for q, start in zip(queries, starts)]

@@ -74,10 +74,9 @@ class EvalContext:
         categories, e = category_vectors(frames)
         index = {c.lower(): j for j, c in enumerate(categories)}
         labels = {int(o["id"]): str(o["label"]) for o in gt.objects}
-        observed = observed_footprints(frames, gt.grid, cfg, Path(frames_dir) / "gt" / "depth")
-        flat, ids, top = observed[:3] if observed is not None else gt.cells.entries()
-        seen = set(np.flatnonzero(observed[3] >= cfg.min_mask_pixels).tolist()) if observed is not None else set(labels)
-        keep_ids = np.array(sorted(set(labels) & set(np.unique(ids).tolist()) & seen), np.int64)
+        observed = observed_masks(frames_dir, gt, cfg)
+        flat, ids, top = observed if observed is not None else gt.cells.entries()
+        keep_ids = np.array(sorted(set(labels) & set(np.unique(ids).tolist())), np.int64)
         if footprint == "full":
             flat, ids, top = gt.cells.entries()
         sel = np.isin(ids, keep_ids)
@@ -159,6 +158,24 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, ex
         return None
     merged = InstanceGrid.from_entries(*(np.concatenate([p[j] for p in parts]) for j in range(3)))
     return (*merged.entries(), counts)
+
+
+def observed_masks(frames_dir: str | Path, gt: GroundTruth, cfg: MappingConfig | None = None
+                   ) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """The observed footprints of the objects seen in at least `cfg.min_mask_pixels` pixels, as
+    (flat cell in `gt.grid`, gt id, top m) entries, from `observed_footprints` of the frames in
+    `frames_dir` with the exact depth of DIR/gt/depth; None when `frames_dir` holds no frames
+    (no scene.json: a ground truth alone) or no frame has an instance image."""
+    cfg = cfg or MappingConfig()
+    frames_dir = Path(frames_dir)
+    if not (frames_dir / "scene.json").is_file():
+        return None
+    observed = observed_footprints(FrameSet.open(frames_dir), gt.grid, cfg, frames_dir / "gt" / "depth")
+    if observed is None:
+        return None
+    flat, ids, top, counts = observed
+    keep = counts[ids] >= cfg.min_mask_pixels
+    return flat[keep], ids[keep], top[keep]
 
 
 @dataclass

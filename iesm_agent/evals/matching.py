@@ -4,6 +4,8 @@ by their cell centres, so the two grids may differ in origin."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
 from ..store.model import GridSpec, InstanceGrid, SceneMap
@@ -59,11 +61,19 @@ def greedy_pairs(g: np.ndarray, p: np.ndarray, score: np.ndarray, threshold: flo
     return out
 
 
-def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5) -> dict[int, int]:
-    """{gt id: built-map id} for pairs whose top-down masks have IoU > `iou_threshold`.
-    `gt` is a `frames.GroundTruth`."""
+def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5, frames_dir: str | Path | None = None
+                    ) -> dict[int, int]:
+    """{gt id: built-map id} for pairs whose top-down masks have IoU > `iou_threshold`. `gt` is a
+    `GroundTruth`. Its masks: with `frames_dir` holding the frames the map was built from, with
+    instance images, the observed footprints of the objects seen (`evals.mapping.observed_masks`, what the
+    mapping table's first ground truth scores), else the full box footprints (gt/cells.npz)."""
+    observed = None
+    if frames_dir is not None:
+        from .mapping import observed_masks
+
+        observed = observed_masks(frames_dir, gt)
+    gflat, gids, _gtop = observed if observed is not None else gt.cells.entries()
     flat, ids, _top = masks_in_grid(scene.occupancy, scene.grid, gt.grid)
-    gflat, gids, _gtop = gt.cells.entries()
     g, p, score = iou_pairs((flat, ids), (gflat, gids))
     return greedy_pairs(g, p, score, iou_threshold)
 

@@ -81,12 +81,14 @@ class NavTrials:
         self.true_blocked = inflate(gt.occupancy, body_radius, gt.grid.cell_size)
 
     @classmethod
-    def for_map(cls, scene: SceneMap, gt, **kwargs) -> "NavTrials":
+    def for_map(cls, scene: SceneMap, gt, frames_dir=None, **kwargs) -> "NavTrials":
         """Trials for a map built from the frames whose ground truth is `gt`, ids matched by
-        `mapping.matching.match_instances` (the paper's top-down IoU > 0.5)."""
+        `evals.matching.match_instances` (the paper's top-down IoU > 0.5; against the observed
+        footprints when `frames_dir`, the frame directory, is given)."""
         from .matching import match_instances
 
-        return cls(scene, gt, {pred: gt_id for gt_id, pred in match_instances(scene, gt).items()}, **kwargs)
+        matched = match_instances(scene, gt, frames_dir=frames_dir)
+        return cls(scene, gt, {pred: gt_id for gt_id, pred in matched.items()}, **kwargs)
 
     def run(self, instance_id: int, start_xy: tuple[float, float], judge_id: Optional[int] = None) -> TrialOutcome:
         """Go to built instance `instance_id` from `start_xy`; success is judged against the

@@ -258,7 +258,7 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
         from ..sim.ground_truth import GroundTruth
         from .navigation import NavTrials
 
-        navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory))
+        navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory), directory)
                 for path, directory in nav_ground_truth(config.gt, with_starts).items() if path in stores}
     retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
                                             experts_dirs=config.experts_dirs, cache=False)

@@ -1,6 +1,7 @@
 """The mapping pipeline over a frame set (paper Sec. 3.1): per frame, project the candidates
 top-down, associate and fuse them into the instance dictionary; then the optional second
-pass, categorisation against the scene's category list, and the 2.5D `SceneMap`."""
+pass, the continuity merge (`MappingConfig.continuity_gap`, off in `paper()`), categorisation
+against the scene's category list, and the 2.5D `SceneMap`."""
 
 from __future__ import annotations
 
@@ -50,8 +51,10 @@ class MapBuilder:
         before, merges = len(d), 0
         if second_pass:
             d, merges = d.second_pass()
+        d, continuous = d.merge_continuous()
         meta = {"frames": str(self.n_frames), "second_pass": str(second_pass).lower(),
-                "instances_first_pass": str(before), "second_pass_merges": str(merges)}
+                "instances_first_pass": str(before), "second_pass_merges": str(merges),
+                "continuity_merges": str(continuous)}
         return to_scene_map(d, categories, category_embeddings, cell_size=self.cfg.cell_size, scene_id=scene_id,
                             embedding_space=embedding_space, meta=meta)
 

@@ -88,3 +88,10 @@ def intersections(keys_a: np.ndarray, owner_a: np.ndarray, keys_b: np.ndarray,
     base = int(pb.max()) + 1
     codes, counts = np.unique(pa * base + pb, return_counts=True)
     return codes // base, codes % base, counts
+
+
+def dilate(keys: np.ndarray, radius: int) -> np.ndarray:
+    """Sorted keys of every cell within Chebyshev distance `radius` (cells) of a cell of `keys`."""
+    steps = np.arange(-radius, radius + 1, dtype=np.int64)
+    offsets = (steps[:, None] * SPAN + steps[None, :]).ravel()
+    return np.unique((np.asarray(keys, np.int64)[:, None] + offsets[None, :]).ravel())

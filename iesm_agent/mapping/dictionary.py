@@ -1,5 +1,6 @@
-"""The instance dictionary I^exist: association against it, fusion into it, and the second
-association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion").
+"""The instance dictionary I^exist: association against it, fusion into it, the second
+association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion") and the
+continuity merge of touching stretches of one object (not in the paper, `merge_continuous`).
 
 Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
 the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
@@ -16,8 +17,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..config import MappingConfig
-from .association import phi_geo, phi_sem, select_matches
-from .cells import intersections, union_max
+from .association import continuous_link, phi_geo, phi_sem, select_matches
+from .cells import dilate, intersections, union_max
 from .project import TopDownCandidates
 
 _EMPTY = np.zeros(0, np.int64)
@@ -128,21 +129,52 @@ class InstanceDictionary:
                 target[c] = self.add(*args)
         return target
 
-    def second_pass(self) -> tuple["InstanceDictionary", int]:
-        """The second association-fusion pass: every entry, heaviest first (ties by index), is
-        associated with the dictionary rebuilt so far and fused into it or added. Returns the
-        new dictionary and the number of merges."""
+    def _regroup(self, link) -> tuple["InstanceDictionary", int]:
+        """Every entry i, heaviest first (ties by index), is fused into the entry `link(self, out, i)`
+        of the dictionary `out` rebuilt so far, or added to it when that is -1. Returns `out` and the
+        number of fusions."""
         out = InstanceDictionary(self._f.shape[1], self.cfg)
         merges = 0
         for i in np.argsort(-self.weights, kind="stable"):
-            keys = self.keys[i]
-            a, e, geo, sem = out.compare(keys, np.zeros(len(keys), np.int64), self._size[i:i + 1],
-                                         self._bbox[i:i + 1], self._f[i:i + 1])
-            m = select_matches(a, e, geo, sem, 1, self.cfg)[0]
-            args = (keys, self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
+            m = link(self, out, i)
+            args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1
             else:
                 out.add(*args)
         return out, merges
+
+    def second_pass(self) -> tuple["InstanceDictionary", int]:
+        """The second association-fusion pass: every entry, heaviest first, is associated with
+        the dictionary rebuilt so far (`select_matches`) and fused into it or added. Returns the
+        new dictionary and the number of merges."""
+        def link(src: InstanceDictionary, out: InstanceDictionary, i: int) -> int:
+            keys = src.keys[i]
+            a, e, geo, sem = out.compare(keys, np.zeros(len(keys), np.int64), src._size[i:i + 1],
+                                         src._bbox[i:i + 1], src._f[i:i + 1])
+            return int(select_matches(a, e, geo, sem, 1, self.cfg)[0])
+
+        return self._regroup(link)
+
+    def merge_continuous(self) -> tuple["InstanceDictionary", int]:
+        """Fuse entries whose top-down masks touch (`continuous_link`), repeated until nothing more
+        fuses, so a wall seen in stretches that never overlap ends as one entry. Returns the new
+        dictionary and the number of merges; `cfg.continuity_gap` None: no change."""
+        if self.cfg.continuity_gap is None:
+            return self, 0
+        radius = 1 + int(round(self.cfg.continuity_gap / self.cfg.cell_size))
+
+        def link(src: InstanceDictionary, out: InstanceDictionary, i: int) -> int:
+            near = dilate(src.keys[i], radius)
+            box = src._bbox[i:i + 1] + np.array([-radius, radius, -radius, radius])
+            _a, e, _geo, sem = out.compare(near, np.zeros(len(near), np.int64), np.array([len(near)]), box,
+                                           src._f[i:i + 1])
+            return continuous_link(src.keys[i], e, sem, out.keys, self.cfg)
+
+        d, total = self, 0
+        while True:
+            d, merges = d._regroup(link)
+            total += merges
+            if merges == 0:
+                return d, total

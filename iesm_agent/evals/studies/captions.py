@@ -26,7 +26,7 @@ def score_scene(frames: Path, built: Path) -> dict:
     from ..captions import colour_scores
 
     scene = caption_map(load_map(built), frames, OfflineCaptioner())
-    return colour_scores(scene, GroundTruth.load(frames))
+    return colour_scores(scene, GroundTruth.load(frames), frames_dir=frames)
 
 
 def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: Optional[Path] = None,
@@ -41,7 +41,8 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: O
     mean = {k: statistics.fmean(r[k] for r in rows.values() if r[k] is not None)
             for k in ("colour_acc", "colour_name_acc")}
     lines = [f"Profile `{realism}`; walled `--size small` scenes, seeds {seeds_arg} (not used for tuning); offline "
-             "captioner on the built map; instances matched to ground truth (top-down IoU > 0.5) and seen in >= 3 "
+             "captioner on the built map; instances matched to ground truth (observed footprint, top-down IoU > 0.5) "
+             "and seen in >= 3 "
              "frames.", "", "| seed | instances scored | colour family acc | exact colour name acc |",
              "|---|---:|---:|---:|"]
     for seed, r in rows.items():

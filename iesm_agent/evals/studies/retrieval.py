@@ -4,7 +4,8 @@
 
 Per seed: simulate a `--size small` scene, build, segment rooms and caption offline (as the demo,
 through the API: `storage.captioned_map`), write a query suite from ground truth
-(`evals/gt_queries.py`, types o,or,od,ord,ard, 10 per type, seed = scene seed) and run methods
+(`evals/gt_queries.py`, types o,or,od,ord,ard, 10 per type, seed = scene seed; targets among the
+objects the frames show, translated to built instances by observed-footprint IoU > 0.5) and run methods
 mtefr, spr and keyword with the offline model, N-SR against the ground truth.
 """
 
@@ -62,9 +63,11 @@ def _pct(v) -> str:
 def render_table(summary: dict) -> str:
     lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} (not used for tuning); simulated "
              "`--size small` scenes, built maps with rooms (simulator labels) and offline captions; queries from "
-             "ground truth (`evals/gt_queries.py`, types " + ",".join(TYPES) + ", 10 per type, seed = scene seed; "
+             "ground truth (`evals/gt_queries.py`, types " + ",".join(TYPES) + ", 10 per type, seed = scene seed, "
+             "targets among the objects the frames show; "
              f"{sum(r['queries'] for r in summary['scenes'])} queries kept, "
-             f"{sum(r['dropped'] for r in summary['scenes'])} dropped for an unmatched target); offline model; "
+             f"{sum(r['dropped'] for r in summary['scenes'])} dropped because no built instance matches the "
+             "target's observed footprint (top-down IoU > 0.5)); offline model; "
              "N-SR against the ground truth. O-SR and N-SR in %, mean over seeds.", "",
              "| Method | " + " | ".join(TYPES) + " | O-SR | N-SR |", "|---|" + "---:|" * (len(TYPES) + 2)]
     for method in METHODS:
