@@ -37,3 +37,14 @@ def test_a_scene_that_cannot_be_made_is_skipped_and_listed():
     rows, skipped = scene_rows([10, 11, 12], score, lambda r: f"x {r['x']}", "walled")
     assert rows == [{"seed": 10, "x": 10}, {"seed": 12, "x": 12}]
     assert skipped == ["walled seed 11: no room for a door"]
+
+
+def test_kept_scenes_live_under_the_fingerprint_of_the_code_that_made_them(tmp_path, monkeypatch):
+    import iesm_agent.evals.studies as studies
+
+    with studies.scene_frames(tmp_path) as cache:
+        first = cache.root
+    assert first.parent == tmp_path and first.name == f"code-{studies.source_fingerprint()}"
+    monkeypatch.setattr(studies, "source_fingerprint", lambda: "changedcode0")  # as after an edit
+    with studies.scene_frames(tmp_path) as cache:
+        assert cache.root == tmp_path / "code-changedcode0" != first

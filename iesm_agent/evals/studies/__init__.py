@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import hashlib
 import json
 import sys
 import tempfile
@@ -83,12 +84,25 @@ class SceneCache:
         return path
 
 
+def source_fingerprint() -> str:
+    """12 hex digits of a hash over the package's Python sources: scenes, maps and runs cached
+    under one fingerprint were made by the code that has it."""
+    package = Path(__file__).resolve().parents[2]
+    digest = hashlib.sha256()
+    for path in sorted(package.rglob("*.py")):
+        digest.update(str(path.relative_to(package)).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:12]
+
+
 @contextlib.contextmanager
 def scene_frames(work: Optional[Path]) -> Iterator[SceneCache]:
-    """A `SceneCache` in `work` (kept) or in a temporary directory (removed afterwards)."""
+    """A `SceneCache` in `work/code-<source fingerprint>` (kept: a later run of the same code reuses
+    it, a run after a code change starts afresh) or in a temporary directory (removed afterwards)."""
     if work is not None:
-        work.mkdir(parents=True, exist_ok=True)
-        yield SceneCache(work)
+        root = work / f"code-{source_fingerprint()}"
+        root.mkdir(parents=True, exist_ok=True)
+        yield SceneCache(root)
         return
     with tempfile.TemporaryDirectory() as tmp:
         yield SceneCache(Path(tmp))
