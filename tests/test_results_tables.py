@@ -43,7 +43,7 @@ def test_mapping_table_first_seed(scene):
     committed = next(iter(_summary("mapping-realistic")["scenes"].values()))
     now = study_scene(frames, MappingConfig())
     for footprint in ("observed", "full"):
-        for method in ("ours", "ours_no_second_pass", "pointwise_2d"):
+        for method in ("ours", "ours_no_second_pass", "pointwise_2d", "pointwise_2d_same"):
             a, b = committed[footprint][method], now[footprint][method]
             assert a["n_pred"] == b["n_pred"] and a["n_matched"] == b["n_matched"], (footprint, method)
             assert a["auc_top"] == pytest.approx(b["auc_top"], abs=1e-9), (footprint, method)

@@ -238,16 +238,20 @@ def prediction_from_pointwise(keys: np.ndarray, scores: np.ndarray, cell_size: f
     return Prediction(ctx.gt_ids.copy(), ranking, (gflat, gids, gtop), cell_classes, matches)
 
 
-def score(pred: Prediction, ctx: EvalContext) -> dict:
+def score(pred: Prediction, ctx: EvalContext, only: Optional[set[int]] = None) -> dict:
     """Every mapping metric of `pred` (keys: auc_top {pred, gt, match, top1_match}, instance_diff,
-    n_pred, n_gt, n_matched, topdown {acc, macc, miou, fmiou}, small {...}, stacked {n_gt, n_matched,
-    top1_match, top1_gt, auc_top_match, auc_top_gt})."""
+    n_pred, n_gt, n_matched, matched_ids, topdown {acc, macc, miou, fmiou}, small {...}, stacked
+    {n_gt, n_matched, top1_match, top1_gt, auc_top_match, auc_top_gt}). `only`: score the
+    matched-object metrics on these ground-truth ids alone (a baseline on the objects another
+    method matched)."""
     j = len(ctx.categories)
     matches = pred.matches
     if matches is None:
         g, p, iou = iou_pairs((pred.cells[0], pred.cells[1]), (ctx.gt_cells[0], ctx.gt_cells[1]))
         keep = np.isin(g, ctx.gt_ids)
         matches = greedy_pairs(g[keep], p[keep], iou[keep], ctx.cfg.match_iou)
+    if only is not None:
+        matches = {g: p for g, p in matches.items() if g in only}
     gt_m = np.array(sorted(matches), np.int64)
     pred_m = np.array([matches[g] for g in gt_m.tolist()], np.int64)
     row = {int(i): k for k, i in enumerate(pred.ids.tolist())}
@@ -256,7 +260,7 @@ def score(pred: Prediction, ctx: EvalContext) -> dict:
                      np.array([ctx.gt_class[g] for g in gt_m.tolist()], np.int64))
     n_pred, n_gt = len(pred.ids), len(ctx.gt_ids)
     out = {"auc_top": auc_top_all(ranks, j, n_pred, n_gt), "instance_diff": abs(n_pred - n_gt),
-           "n_pred": n_pred, "n_gt": n_gt, "n_matched": len(gt_m)}
+           "n_pred": n_pred, "n_gt": n_gt, "n_matched": len(gt_m), "matched_ids": gt_m.tolist()}
     cells = pred.cell_classes
     if cells is None:
         top1 = {int(i): int(pred.ranking[k, 0]) for k, i in enumerate(pred.ids.tolist())}
