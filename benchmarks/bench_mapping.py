@@ -88,10 +88,14 @@ def bench_fps(n_frames: int = 60) -> None:
                 f"association + fusion alone {fps_assoc:.0f} frames/s")
 
 
+#: a seed the mapping and simulator thresholds were not tuned on (tuning seeds: 0-4)
+HELD_OUT_SEED = 10
+
+
 def bench_file_size() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         t0 = time.perf_counter()
-        summary = render_frames(generate_scene(0, "hm3d"), Path(tmp) / "frames")
+        summary = render_frames(generate_scene(HELD_OUT_SEED, "hm3d"), Path(tmp) / "frames")
         t1 = time.perf_counter()
         scene = build_map(FrameSet.open(Path(tmp) / "frames"))
         t2 = time.perf_counter()
@@ -101,7 +105,8 @@ def bench_file_size() -> None:
           f"{len(scene.instances)} instances ({summary['instances']} in the world), grid "
           f"{scene.grid.height}x{scene.grid.width}, {len(scene.observations)} observations -> {size:,} bytes")
     record("map_file_hm3d_mb", mb, "MB", "<= 1 MB", mb <= 1.0,
-           note=f"built from a simulated --size hm3d scene: {len(scene.instances)} instances, "
+           note=f"built from a simulated --size hm3d scene (realistic profile, held-out seed {HELD_OUT_SEED}): "
+                f"{len(scene.instances)} instances, "
                 f"{scene.grid.height}x{scene.grid.width} cells, {scene.embeddings.shape[1]}-d float32 embeddings")
 
 
