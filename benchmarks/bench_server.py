@@ -29,6 +29,7 @@ import re
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -161,6 +162,7 @@ def serve_noop(port_file: str) -> None:
     """The SDK's floor: an MCP server with one tool that returns "ok", the same transport settings
     as `iesm serve` (streamable HTTP, JSON responses, loggers at WARNING); writes its port to `port_file`."""
     import logging
+    import socket
 
     import uvicorn
     from mcp.server.mcpserver import MCPServer
@@ -175,7 +177,6 @@ def serve_noop(port_file: str) -> None:
 
     config = uvicorn.Config(server.streamable_http_app(streamable_http_path="/mcp", json_response=True,
                                                       host="127.0.0.1"), log_level="warning", access_log=False)
-    import socket
     sock = socket.socket()
     sock.bind(("127.0.0.1", 0))
     sock.listen(128)
@@ -208,8 +209,6 @@ async def noop_bursts(url: str, pid: int, n: int, rounds: int = 5) -> dict[str, 
 
 def sdk_floor(n: int) -> dict[str, float]:
     """Bursts of `n` calls to the no-op server in its own process (this script with --noop-server)."""
-    import tempfile
-
     with tempfile.TemporaryDirectory() as tmp:
         port_file = Path(tmp) / "port"
         proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file)],

@@ -204,6 +204,7 @@ def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
     import shutil
 
     from iesm_agent.evals.gt_queries import generate_gt_suite
+    from iesm_agent.evals.mapping import observed_masks
     from iesm_agent.evals.matching import match_instances
 
     frames = tmp_path / "frames"
@@ -218,10 +219,10 @@ def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
     scene = load_map(built)
     by_label = {i.label: i.id for i in scene.instances}
     # paired on the observed footprints: the table's cells under the cup are not the table's
-    assert match_instances(scene, gt, frames_dir=frames) == {1: by_label["table"], 2: by_label["cup"],
-                                                              3: by_label["chair"]}
-    # a ground truth without frames is matched on the box footprints
-    assert match_instances(scene, gt, frames_dir=tmp_path) == match_instances(scene, gt)
+    assert match_instances(scene, gt, observed=observed_masks(frames, gt)) == {
+        1: by_label["table"], 2: by_label["cup"], 3: by_label["chair"]}
+    # a ground truth without frames has no observed footprints: matched on the box footprints
+    assert observed_masks(tmp_path, gt) is None and observed_masks(None, gt) is None
     result, dropped = asyncio.run(generate_gt_suite(str(built), frames, tmp_path / "s.jsonl", ["o"], per_type=10))
     assert dropped == 0 and result.queries
     assert {q.target for q in result.queries} <= set(by_label.values())

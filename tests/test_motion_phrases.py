@@ -103,8 +103,8 @@ def test_a_preamble_says_why_not_what():
 
 
 def test_the_request_sentence_is_the_one_naming_a_kind():
-    info = analyse_query("Where do spare blankets go? The chest in the bedroom.")
-    assert info.named and "bedroom" in info.rooms
+    info = analyse_query("Where do the winter coats live? The chest in the guest room.")
+    assert set(info.targets) == {"chest"} and "bedroom" in info.rooms
     info = analyse_query("Bring me to the office shelf. The oak one, except not the metal one.")
     assert ("material", "wood") in info.attrs and ("material", "metal") in info.excluded_attrs
     assert analyse_query("Which mirror hangs in the hallway? Go there.").named
@@ -118,7 +118,8 @@ def test_landmark_attributes_stay_with_the_landmark():
 
 
 def test_gerunds_after_a_preposition_are_functions_participles_after_a_noun_are_verbs():
-    assert analyse_query("something meant for sleeping in the bedroom").afford
+    afford = analyse_query("something meant for sleeping in the guest room").afford
+    assert max(afford, key=afford.get) == "bed"
     assert parse_query("the cup resting on the shelf").target[0] == "cup"
 
 
@@ -137,7 +138,7 @@ def test_landmark_colours_are_read_across_colour_suffixes():
 def test_a_room_word_before_another_noun_is_that_nouns_room():
     assert analyse_query("a box for the kitchen scraps").rooms == {}
     assert "office" in analyse_query("the office bookcase").rooms
-    assert "bedroom" in analyse_query("a book in the bedroom, bound in cloth").rooms
+    assert "bedroom" in analyse_query("a book in the guest room, bound in cloth").rooms
 
 
 def test_plurals_in_ves_read_as_their_noun():

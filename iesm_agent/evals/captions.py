@@ -33,9 +33,10 @@ def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES, frames_dir:
     """{"colour_acc", "colour_name_acc", "n", "min_frames"} of the map's caption colours
     (accuracies None when no instance qualifies)."""
     from ..captioning.views import frames_seen
+    from .mapping import observed_masks
     from .matching import match_instances
 
-    matched = match_instances(scene, gt, frames_dir=frames_dir)
+    matched = match_instances(scene, gt, observed=observed_masks(frames_dir, gt))
     seen = (frames_seen(scene.observations) if scene.observations is not None
             else {i.id: len(i.frames) for i in scene.instances})
     objects = {int(o["id"]): o for o in gt.objects}

@@ -83,7 +83,7 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
         result = await generate_suite([str(src)], Path(tmp) / "suite.jsonl", types, per_type=per_type, seed=seed,
                                       model=model, paraphrases=paraphrases, id_prefix=id_prefix)
     ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
-    queries, dropped = translate(result.queries, match_instances(scene, gt, frames_dir=frames_dir), ref)
+    queries, dropped = translate(result.queries, match_instances(scene, gt, observed=observed), ref)
     starts = free_starts(gt, len(queries), seed)
     if starts:
         queries = [q.model_copy(update={"start": start}) for q, start in zip(queries, starts)]

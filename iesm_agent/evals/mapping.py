@@ -160,16 +160,16 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, ex
     return (*merged.entries(), counts)
 
 
-def observed_masks(frames_dir: str | Path, gt: GroundTruth, cfg: MappingConfig | None = None
+def observed_masks(frames_dir: str | Path | None, gt: GroundTruth, cfg: MappingConfig | None = None
                    ) -> Optional[tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """The observed footprints of the objects seen in at least `cfg.min_mask_pixels` pixels, as
     (flat cell in `gt.grid`, gt id, top m) entries, from `observed_footprints` of the frames in
-    `frames_dir` with the exact depth of DIR/gt/depth; None when `frames_dir` holds no frames
-    (no scene.json: a ground truth alone) or no frame has an instance image."""
+    `frames_dir` with the exact depth of DIR/gt/depth; None when `frames_dir` is None or holds no
+    frames (no scene.json: a ground truth alone) or no frame has an instance image."""
     cfg = cfg or MappingConfig()
-    frames_dir = Path(frames_dir)
-    if not (frames_dir / "scene.json").is_file():
+    if frames_dir is None or not (Path(frames_dir) / "scene.json").is_file():
         return None
+    frames_dir = Path(frames_dir)
     observed = observed_footprints(FrameSet.open(frames_dir), gt.grid, cfg, frames_dir / "gt" / "depth")
     if observed is None:
         return None

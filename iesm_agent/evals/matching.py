@@ -4,8 +4,6 @@ by their cell centres, so the two grids may differ in origin."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
 from ..store.model import GridSpec, InstanceGrid, SceneMap
@@ -61,17 +59,12 @@ def greedy_pairs(g: np.ndarray, p: np.ndarray, score: np.ndarray, threshold: flo
     return out
 
 
-def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5, frames_dir: str | Path | None = None
-                    ) -> dict[int, int]:
+def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5,
+                    observed: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> dict[int, int]:
     """{gt id: built-map id} for pairs whose top-down masks have IoU > `iou_threshold`. `gt` is a
-    `GroundTruth`. Its masks: with `frames_dir` holding the frames the map was built from, with
-    instance images, the observed footprints of the objects seen (`evals.mapping.observed_masks`, what the
-    mapping table's first ground truth scores), else the full box footprints (gt/cells.npz)."""
-    observed = None
-    if frames_dir is not None:
-        from .mapping import observed_masks
-
-        observed = observed_masks(frames_dir, gt)
+    `GroundTruth`. Its masks: `observed`, the observed footprints of the objects the frames show
+    as (flat cell, gt id, top) entries (`evals.mapping.observed_masks`, what the mapping table's
+    first ground truth scores), else the full box footprints (gt/cells.npz)."""
     gflat, gids, _gtop = observed if observed is not None else gt.cells.entries()
     flat, ids, _top = masks_in_grid(scene.occupancy, scene.grid, gt.grid)
     g, p, score = iou_pairs((flat, ids), (gflat, gids))

@@ -85,9 +85,10 @@ class NavTrials:
         """Trials for a map built from the frames whose ground truth is `gt`, ids matched by
         `evals.matching.match_instances` (the paper's top-down IoU > 0.5; against the observed
         footprints when `frames_dir`, the frame directory, is given)."""
+        from .mapping import observed_masks
         from .matching import match_instances
 
-        matched = match_instances(scene, gt, frames_dir=frames_dir)
+        matched = match_instances(scene, gt, observed=observed_masks(frames_dir, gt))
         return cls(scene, gt, {pred: gt_id for gt_id, pred in matched.items()}, **kwargs)
 
     def run(self, instance_id: int, start_xy: tuple[float, float], judge_id: Optional[int] = None) -> TrialOutcome:

@@ -78,9 +78,6 @@ def select_matches(pair_a: np.ndarray, pair_b: np.ndarray, geo: np.ndarray, sem:
     return match
 
 
-
-
-
 # The three shape constants were chosen on tuning seeds 0-4 (both profiles) from elongation
 # {1.5, 2, 3} x angle {15, 20, 30} deg x offset {0.15, 0.25} m: the lowest realistic Inst. Diff among
 # settings losing at most one matched instance per scene on either profile (docs/results.md).

@@ -47,23 +47,6 @@ def detect_segments(mask: np.ndarray, scale: float = 0.8) -> tuple[np.ndarray, s
     return segments, name, notes
 
 
-def _union_find(n: int, pairs: np.ndarray) -> np.ndarray:
-    """Component representative per node given (P, 2) edges (loops over segments, not cells)."""
-    parent = np.arange(n)
-
-    def root(i: int) -> int:
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    for a, b in pairs.tolist():
-        ra, rb = root(a), root(b)
-        if ra != rb:
-            parent[max(ra, rb)] = min(ra, rb)
-    return np.array([root(i) for i in range(n)])
-
-
 def merge_collinear(segments: np.ndarray, angle_deg: float, offset: float, gap: float) -> np.ndarray:
     """Merge segments that are near-parallel (<= `angle_deg`), lie on nearly the same line (each
     one's midpoint within `offset` cells of the other's line) and whose extents along that line
@@ -87,7 +70,11 @@ def merge_collinear(segments: np.ndarray, angle_deg: float, offset: float, gap: 
     ok = ((cos >= np.cos(np.deg2rad(angle_deg))) & (np.maximum(off, off.T) <= offset)
           & (np.minimum(gaps, gaps.T) <= gap))
     pairs = np.argwhere(np.triu(ok, 1))
-    groups = _union_find(n, pairs)
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    groups = connected_components(graph, directed=False)[1]
     merged = []
     for g in np.unique(groups):
         members = np.flatnonzero(groups == g)

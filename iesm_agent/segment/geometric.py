@@ -77,20 +77,11 @@ class GeometricSegmenter:
         med = np.array([np.median(steps[s:s + k]) for s, k in zip(start, sizes)])
         a, b = uniq // n, uniq % n
         close = (np.linalg.norm(mean_lab[a] - mean_lab[b], axis=1) < self.colour_merge) & (med < self.depth_jump)
-        parent = np.arange(n)
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
 
-        def find(x: int) -> int:
-            while parent[x] != x:
-                parent[x] = parent[parent[x]]
-                x = parent[x]
-            return x
-
-        for x, y in zip(a[close], b[close]):
-            rx, ry = find(int(x)), find(int(y))
-            if rx != ry:
-                parent[max(rx, ry)] = min(rx, ry)
-        roots = np.array([find(i) for i in range(n)])
-        return roots[labels]
+        graph = coo_matrix((np.ones(int(close.sum())), (a[close], b[close])), shape=(n, n))
+        return connected_components(graph, directed=False)[1][labels]
 
     def _masks(self, labels: np.ndarray, frame: Frame) -> Segmentation:
         import cv2

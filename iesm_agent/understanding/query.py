@@ -101,7 +101,7 @@ def _names_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: d
                       head: Span | None) -> bool:
     """A room word directly before a noun other than the target's ("the office papers") modifies
     that noun; before the target ("the office bookcase"), or in a chain leading to it ("the
-    bathroom sink cabinet"), or in a place phrase ("in the bedroom") it says where the target is."""
+    bathroom sink cabinet"), or in a place phrase ("in the attic") it says where the target is."""
     if span.start > 0 and lemmas[span.start - 1] in _PLACE_PREPOSITIONS | {"at"}:
         return False
     nxt = _next_noun(lex, lemmas, span, categories)
@@ -130,7 +130,7 @@ _DEICTIC = frozenset({"there", "here", "it", "now", "thanks", "thank", "you", "p
 
 def _request_sentence(lex: Lexicon, text: str) -> tuple[str, str]:
     """(request, context) of a query of several sentences: the request is the last sentence that
-    names a kind of object ("Where do spare blankets go? The chest in the bedroom.") with the
+    names a kind of object ("Where do the winter coats live? The chest in the attic.") with the
     sentences after it ("The oak one."); the sentences before it are context; sentences
     without content ("Head there.") drop out. One sentence, or none naming a kind: (text, "")."""
     parts = [p for p in _SENTENCE_END.split(text) if p.strip()]

@@ -23,13 +23,13 @@ class Slot:
 def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
     """Lemmas of a query's tokens; a present participle after a noun and before a preposition keeps
     its form ("the lamp standing on the desk": a verb, so never the category "lamp stand"); a
-    gerund after a preposition is read as its verb ("for sitting in" -> sit)."""
+    gerund after a preposition is read as its verb ("for resting on" -> rest)."""
     bounds = lex.words["boundaries"]
     out = []
     for i, token in enumerate(tokens):
         lemma = lex.lemma(token)
         if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds \
-                and i > 0 and tokens[i - 1] not in bounds:  # "meant for sitting in ...": a gerund, read as sit
+                and i > 0 and tokens[i - 1] not in bounds:  # a participle after a noun: "the lamp standing on"
             lemma = token
         out.append(lemma)
     return out

@@ -88,5 +88,6 @@ def main(argv: list[str] | None = None) -> int:
     return study_main("calibration", __doc__, "10-14", "docs/results/calibration-realistic",
                       lambda a, seeds: run_study(seeds, a.out, a.realism, a.seeds, a.work, log=log_stderr), argv)
 
+
 if __name__ == "__main__":
     sys.exit(main())

@@ -173,5 +173,6 @@ def main(argv: list[str] | None = None) -> int:
                       lambda a, seeds: run_study(seeds, a.out, realism=a.realism, seeds_arg=a.seeds, size=a.size,
                                                  work=a.work, space=a.space, log=log_stderr), argv, extra)
 
+
 if __name__ == "__main__":
     sys.exit(main())

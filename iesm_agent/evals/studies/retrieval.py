@@ -96,5 +96,6 @@ def main(argv: list[str] | None = None) -> int:
     return study_main("retrieval", __doc__, "10-12", "docs/results/retrieval-realistic",
                       lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
 
+
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -100,5 +100,6 @@ def main(argv: list[str] | None = None) -> int:
     return study_main("rooms", __doc__, "10-14", "docs/results/rooms-realistic",
                       lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
 
+
 if __name__ == "__main__":
     raise SystemExit(main())

@@ -239,7 +239,7 @@ def rank(prompt: Prompt) -> dict:
     targets = np.flatnonzero(kind & scene.is_candidate)
     named_rooms = {r for r, w in analyse_query(prompt.query).rooms.items() if w >= 1.0}
     in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
-    if in_room.any():  # "... in the bedroom": that room's instances
+    if in_room.any():  # "... in the attic": that room's instances
         targets = targets[in_room]
     if not len(targets):
         return abstain("no candidate of the target kind")
