@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
-_TOKEN = re.compile(r"[a-z0-9]+(?:['\-][a-z0-9]+)*")
+_TOKEN = re.compile(r"[a-z0-9]+(?:['\-][a-z0-9]+)*", re.I)
 
 #: span kinds; "cue" values are affordance entry indices (as strings)
 KINDS = ("cat", "gen", "room", "color", "material", "shape", "size", "desc", "cue")
@@ -73,13 +73,30 @@ class Lexicon:
         """Lowercase word tokens of `text`, not lemmatised. A hyphenated word the lexicon knows
         ("off-white", "l-shaped") stays whole; an unknown compound ("honey-colored", "blue-gray",
         "x-shaped") is split into its parts so each part can be read."""
-        out: list[str] = []
-        for tok in _TOKEN.findall(text.lower().replace("\u2019", "'")):
+        return [tok for tok, _ in self.token_offsets(text)]
+
+    def token_offsets(self, text: str) -> list[tuple[str, int]]:
+        """`tokens(text)` with each token's character offset in `text`."""
+        out: list[tuple[str, int]] = []
+        for match in _TOKEN.finditer(text.lower().replace("\u2019", "'")):
+            tok, at = match.group(), match.start()
             if "-" in tok and tok not in self.vocab and tok not in self.lemmas:
-                out.extend(t for t in tok.split("-") if t)
+                for part in tok.split("-"):
+                    if part:
+                        out.append((part, at))
+                    at += len(part) + 1
             else:
-                out.append(tok)
+                out.append((tok, at))
         return out
+
+    def respell(self, text: str) -> str:
+        """`text` with each misspelt word replaced by what it misspells (`spell`); everything
+        else, case and punctuation included, as written."""
+        def fix(match: re.Match) -> str:
+            word = match.group()
+            fixed = self.spell([word.lower()])
+            return word if fixed == [word.lower()] else " ".join(fixed)
+        return _TOKEN.sub(fix, text.replace("\u2019", "'"))
 
     def correct(self, token: str) -> str:
         """`token`, or the lexicon word it misspells:

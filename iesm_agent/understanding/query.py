@@ -3,13 +3,13 @@ with the shipped lexicon. Every provider and the candidate selection rely on thi
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
+from .parse import Structure, normalise, parse_request
 from .text import Slot, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
@@ -123,33 +123,6 @@ def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories
     return bool(_next_noun(lex, lemmas, span, categories))
 
 
-_SENTENCE_END = re.compile(r"[.?!;]+(?:\s+|$)")
-#: words that add nothing to a sentence's content ("Head there.", "Thanks!")
-_DEICTIC = frozenset({"there", "here", "it", "now", "thanks", "thank", "you", "please", "go", "ok", "okay"})
-
-
-def _request_sentence(lex: Lexicon, text: str) -> tuple[str, str]:
-    """(request, context) of a query of several sentences: the request is the last sentence that
-    names a kind of object ("Where do the winter coats live? The chest in the attic.") with the
-    sentences after it ("The oak one."); the sentences before it are context; sentences
-    without content ("Head there.") drop out. One sentence, or none naming a kind: (text, "")."""
-    parts = [p for p in _SENTENCE_END.split(text) if p.strip()]
-    if len(parts) < 2:
-        return text, ""
-    content = []
-    for part in parts:
-        words = [t for t in strip_motion(_strip_command(lex, lex.tokens(part)))
-                 if t not in _DEICTIC and t not in lex.words["skip"]]
-        if words:
-            content.append(part)
-    naming = [p for p in content
-              if any(sp.has("cat") or sp.has("gen") for sp in lex.scan(lemmatise(lex, lex.spell(lex.tokens(p)))))]
-    if not naming:
-        return (" ".join(content) if content else text), ""
-    at = content.index(naming[-1])  # what follows qualifies it ("The oak one."), what comes before says why
-    return " ".join(content[at:]), " ".join(content[:at])
-
-
 #: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
 _REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
 #: share of the request's function evidence a preamble's function evidence gets
@@ -198,21 +171,118 @@ def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
     return None
 
 
+class _Token(str):
+    """A lexicon token that keeps its character offset in the parsed text (`at`)."""
+
+    at: int
+
+
+def _request_tokens(lex: Lexicon, text: str, where: tuple[int, int]) -> list[str]:
+    """Lexicon tokens of `text[where[0]:where[1]]`, each carrying its offset in `text`."""
+    out = []
+    for token, at in lex.token_offsets(text[where[0]:where[1]]):
+        tok = _Token(token)
+        tok.at = where[0] + at
+        out.append(tok)
+    return out
+
+
+@dataclass(frozen=True)
+class _Target:
+    """Where the target phrase lies among the request's lemmas: `start` (first word), `end`
+    (one past the head), `head` (the category span of the head noun, None when there is none)."""
+
+    start: int
+    end: int
+    head: Span | None
+
+
+def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) -> _Target | None:
+    """The target phrase the parse names, when its head noun is a category the lexicon knows
+    (not a room); None otherwise (the caller reads the phrase from the word order)."""
+    if structure.target is None:
+        return None
+    word = structure.words[structure.target]
+    first = structure.words[structure.phrase[0]].start
+    at = [getattr(t, "at", -1) for t in surface]
+    index = next((i for i, a in enumerate(at) if word.start <= a < word.start + len(word.text)), None)
+    if index is None:
+        return None
+    head = next((s for s in spans if s.start <= index < s.end), None)
+    if head is None or not head.has("cat") or head.has("gen") or not set(head.values("cat")) - _UNSPECIFIC:
+        return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
+    if any(s.has("cue") and s.end - s.start > 1 and s.start <= index < s.end for s in spans):
+        return None  # the object of a use ("where can I take a bath")
+    following = {s.start: s for s in spans if s.has("cat")}
+    while head.end in following and at[head.end] == at[head.end - 1] + len(surface[head.end - 1]) + 1:
+        head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
+    start = min(next((i for i, a in enumerate(at) if a >= first), head.start), head.start)
+    described = {s.end: s for s in spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)}
+    while start in described and at[start] == at[start - 1] + len(surface[start - 1]) + 1:
+        start = described[start].start  # adjectives right before the phrase are its own, whatever the parse
+    return _Target(start, head.end, head)
+
+
+def _ordered_target(lex: Lexicon, surface: list[str], lemmas: list[str], spans: list[Span],
+                    clause: set[int], covered: set[int]) -> _Target:
+    """The target phrase read from the word order when the parse names no known category: it
+    ends at the first boundary word (a relative clause, landmark or room) or where a clause
+    about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
+    category before that."""
+    bounds = lex.words["boundaries"]
+    inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
+    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
+    if lemmas and lemmas[0] in bounds:
+        end = 0
+    if clause:
+        end = min(end, min(clause))
+    head = _head_span(spans, end, lemmas, lex.words["abstract"])
+    if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
+        end, head = head.start, None  # "something (that) gives light": light is what it does
+    return _Target(0, end, head)
+
+
+def _outside_target(structure: Structure, surface: list[str], span: Span, target: _Target,
+                    place_ok: bool = False) -> bool:
+    """True when the words of `span` modify a noun other than the target ("beside the tall
+    wardrobe", "the office papers"); a part of the target ("the mug with the blue handle")
+    and a predicate ("it is white") stay the target's, and with `place_ok` so does a place
+    phrase ("in the bathroom area")."""
+    at = getattr(surface[span.end - 1], "at", None)
+    if at is None or structure.target is None:
+        return False
+    noun = structure.modified_noun(at)
+    if noun is None or noun == structure.target:
+        return False
+    owner = structure.words[noun]
+    if owner.dep == "attr":  # "the dresser is a dark brown box": the target, named again
+        return False
+    via = structure.words[owner.head]
+    if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
+        return False
+    return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
+
+
 @lru_cache(maxsize=4096)
 def analyse_query(text: str) -> QueryInfo:
     """Targets, rooms, attributes and functional intent of a natural-language query; words
     after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     skip, bounds = lex.words["skip"], lex.words["boundaries"]
-    request, context = _request_sentence(lex, text)
-    tokens = lex.spell(lex.tokens(request))
+    corrected = normalise(lex.respell(text))
+    structure = parse_request(corrected)
+    tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
     ruled_out = None
     if marker is not None:
         ruled_out = analyse_query(" ".join(tokens[marker[1]:]))
         tokens = tokens[:marker[0]]
-    tokens, preamble = _split_preamble(lex, tokens)
-    preamble = lex.tokens(context) + preamble
+    request, preamble = _split_preamble(lex, tokens)
+    if structure.target is None or structure.words[structure.target].start >= getattr(request[0], "at", 0):
+        tokens = request  # what comes before the request phrase only says why
+    else:
+        preamble = []  # the parse's target comes first ("The settee shaped like an L. Go there.")
+    preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
     tokens = _strip_command(lex, _place_phrase_last(lex, _drop_question_word(strip_motion(tokens))))
     surface = [t for t in tokens if t not in skip]
     lemmas = lemmatise(lex, surface)
@@ -222,24 +292,14 @@ def analyse_query(text: str) -> QueryInfo:
     if ruled_out is not None:
         info.excluded_targets = frozenset(ruled_out.targets)
         info.excluded_attrs = frozenset(ruled_out.attrs)
-
-    # the target noun phrase ends at the first boundary word (relative clause, landmark, room)
-    inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
-    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
-    if lemmas and lemmas[0] in bounds:
-        end = 0
-    # or where a clause about a landmark begins ("the cabinet the printer sits on"): what that
-    # clause's verb does is the landmark's business, not the target's use
-    clause = _landmark_clauses(surface, categories, clause_final_words(request))
-    if clause:
-        end = min(end, min(clause))
+    clause = _landmark_clauses(surface, categories, clause_final_words(corrected))
     covered: set[int] = set()
     for s in spans:
         covered.update(range(s.start, s.end))
-    head = _head_span(spans, end, lemmas, lex.words["abstract"])
-    if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
-        end, head = head.start, None  # "something (that) gives light": light is what it does
-    info.abstract = any(t in lex.words["abstract"] for t in lemmas[:max(end, 1)])
+    parsed = _parsed_target(structure, surface, spans)
+    target = parsed or _ordered_target(lex, surface, lemmas, spans, clause, covered)
+    end, head = target.end, target.head
+    info.abstract = any(t in lex.words["abstract"] for t in lemmas[target.start:max(end, 1)])
     afford: dict[str, float] = {}
     landmark_words: set[str] = set()
     attr_spans: list[Span] = []
@@ -249,7 +309,7 @@ def analyse_query(text: str) -> QueryInfo:
             cue_covered.update(range(s.start, s.end))
 
     for s in spans:
-        in_target = s.end <= end
+        in_target = target.start <= s.start and s.end <= end
         if s is head:
             info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
             info.target_phrase = " ".join(surface[s.start:s.end])
@@ -263,14 +323,17 @@ def analyse_query(text: str) -> QueryInfo:
             _add_entry(afford, lex.generic[info.generic], 1.0)
             continue
         if s.has("room") and not (in_target and s.has("cat")):
-            if _names_other_noun(lex, lemmas, s, categories, head):
+            if (_outside_target(structure, surface, s, target, place_ok=True) if parsed
+                    else _names_other_noun(lex, lemmas, s, categories, head)):
                 continue  # "a case for the office papers": the papers' room, not the target's
             for r in s.values("room"):
                 info.rooms[r] = 1.0
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr and not s.has("cue") and _modifies_other_noun(lex, lemmas, s, categories, end):
+        if attr and not s.has("cue") and not in_target and (
+                _outside_target(structure, surface, s, target) if parsed
+                else _modifies_other_noun(lex, lemmas, s, categories, end)):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
         if attr:

@@ -1,0 +1,84 @@
+"""The reading of a request rests on a dependency parse: which noun phrase is the target, which
+sentences continue it and which only say why. Wordings written for these tests."""
+
+import pytest
+
+from iesm_agent.lexicon import load_lexicon
+from iesm_agent.understanding import analyse_query
+from iesm_agent.understanding.parse import normalise, parse_request
+
+
+def _target(text: str) -> str | None:
+    structure = parse_request(normalise(load_lexicon().respell(text)))
+    return None if structure.target is None else structure.words[structure.target].text.lower()
+
+
+@pytest.mark.parametrize("text, target", [
+    ("here is a tall green plant. it stands beside the radio.", "plant"),        # later sentences continue it
+    ("a grey armchair. it faces the fireplace.", "armchair"),
+    ("its a small round rug. its under the coffee table.", "rug"),
+    ("the stool is at the counter. the stool is made of metal.", "stool"),
+    ("My back aches after gardening, take me to the bathtub", "bathtub"),      # a preamble says why
+    ("I dropped my pen behind the cabinet, bring me to that cabinet", "cabinet"),
+    ("I'd like to water the fern in the study", "fern"),                       # the object of a wish
+    ("where can I find the green towel", "towel"),
+    ("which kettle is in the kitchen", "kettle"),
+    ("show me where the candles are", "candles"),
+    ("Looking at the bookcases, pick the one on the right.", "bookcases"),    # "one" stands for a plural named before
+    ("Grab one of the cushions from the couch", "cushions"),
+    ("Which vase holds the tulips? Take me to it.", "vase"),                  # "it" points back
+])
+def test_the_parse_names_the_target(text, target):
+    assert _target(text) == target
+
+
+def test_a_continuation_sentence_joins_the_request_and_a_reason_sentence_is_context():
+    text = "I need to print a letter. Take me to the printer in the study."
+    structure = parse_request(text)
+    assert text[slice(*structure.request)] == "Take me to the printer in the study."
+    assert [text[a:b] for a, b in structure.context] == ["I need to print a letter."]
+    text = "this is a black desk lamp. it is on the left of the monitor."
+    assert parse_request(text).request == (0, len(text)) and parse_request(text).context == ()
+
+
+def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sentence():
+    info = analyse_query("this is a leather sofa. it is facing a glass coffee table.")
+    assert info.targets["sofa"] == 1.0 and info.targets["coffee table"] < 1.0
+    info = analyse_query("there is a white wardrobe. it is next to the bed.")
+    assert info.targets["wardrobe"] == 1.0 and info.targets["bed"] < 1.0
+    assert ("color", "white") in info.attrs
+
+
+def test_predicates_of_the_target_are_its_attributes_landmark_adjectives_are_not():
+    info = analyse_query("a bookshelf by the tall window. it is wooden and white.")
+    assert ("color", "white") in info.attrs and ("material", "wood") in info.attrs
+    assert ("size", "tall") not in info.attrs
+    info = analyse_query("the dresser is under the mirror. the dresser is a dark brown box.")
+    assert ("color", "brown") in info.attrs
+
+
+def test_words_the_parse_misreads_stay_with_the_target_when_they_stand_right_before_it():
+    info = analyse_query("Please take me to the light grey woolly armchairs in the den")
+    assert info.targets == {"armchair": 1.0}
+    assert ("color", "gray") in info.attrs
+
+
+def test_activities_and_the_speakers_own_things_are_not_places_to_go():
+    assert _target("where can I have a shower") is None
+    assert _target("I have to iron my shirt") is None
+    assert not analyse_query("I have to iron my shirt").targets.get("clothes", 0) >= 1.0
+
+
+def test_a_fronted_place_phrase_is_the_room_not_the_target():
+    info = analyse_query("in the hallway, locate the coat stand")
+    assert info.targets == {"coat rack": 1.0} and info.rooms == {"hallway": 1.0}
+
+
+def test_typed_shorthand_is_read_as_words():
+    assert normalise("its a mug w/ a lid + a spoon") == "it's a mug with a lid and a spoon"
+    assert normalise("its handle is red") == "its handle is red"
+
+
+def test_misspelt_nouns_are_corrected_before_parsing():
+    assert analyse_query("take me to the bookcsae in the study").targets == {"bookshelf": 1.0}
+    assert _target("the wardorbe next to the bed") == "wardrobe"
