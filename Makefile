@@ -42,6 +42,7 @@ test-fast: $(STAMP)
 
 lint: $(STAMP)
 	$(BIN)/ruff check iesm_agent tests benchmarks
+	$(BIN)/lint-imports
 
 # test-llm: conformance against a real llama.cpp server (llama-cpp-python, built from source with
 # portable CPU flags: the native build crashes on some CPUs) running Gemma 3 270M from the

@@ -5,7 +5,6 @@
 
 import re
 
-from typer._click.core import Context
 from typer.main import get_command
 
 from iesm_agent.cli import app
@@ -43,7 +42,7 @@ def main() -> None:
     names = list(root.commands)
     out = [HEADER.format(index=", ".join(f"[`{n}`](#iesm-{n})" for n in names))]
     for name, cmd in root.commands.items():
-        ctx = Context(cmd, info_name=name, parent=Context(root, info_name="iesm"))
+        ctx = cmd.context_class(cmd, info_name=name, parent=root.context_class(root, info_name="iesm"))
         out.append(f"## iesm {name}\n")
         out.append((cmd.help or "").strip() + "\n")
         usage = " ".join(cmd.collect_usage_pieces(ctx))

@@ -64,7 +64,7 @@ def test_bad_line_names_file_and_line(tmp_path, tiny_map, bad, message):
 
 
 def test_types_are_free_short_labels_reported_after_the_paper_types(tmp_path, tiny_map):
-    from iesm_agent.evals.metrics import ordered_types, type_title
+    from iesm_agent.evals.query_types import ordered_types, type_title
 
     path = _write(tmp_path, [_line(type="spatial"), _line(id="q2", type="s"), _line(id="q3", type="ord")])
     assert [e.query.type for e in load_suites([path]).entries] == ["spatial", "s", "ord"]

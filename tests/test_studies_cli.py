@@ -3,29 +3,68 @@ table printed, and the exact rebuilding command."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from iesm_agent.errors import IesmError
-from iesm_agent.evals.studies import scene_rows, study_command, study_main, write_table
+from iesm_agent.evals.studies import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_rows,
+                                      study_command, study_main, write_table)
+
+
+def demo_study(ran: list):
+    """A study command in the shape every study has; `ran` collects the seeds it was run on."""
+    def command(seeds: Seeds = "10", realism: Realism = "realistic", out: Out = Path("unused"), work: Work = None,
+                allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+        def run(seed_list):
+            ran.append(seed_list)
+            write_table(out, "Demo", study_command("demo", seeds, realism, out), f"seeds {seed_list}", {"seeds": seed_list})
+
+        run_checked(seeds, realism, allow_tuning_seeds, out, run)
+
+    return command
 
 
 def test_tuning_seeds_are_refused_before_any_work(tmp_path, capsys):
     ran = []
-    status = study_main("demo", "A demo study.", "10", str(tmp_path / "out"), lambda a, s: ran.append(s), ["--seeds", "2-3"])
+    status = study_main("demo", "A demo study.", demo_study(ran), ["--seeds", "2-3", "--out", str(tmp_path / "out")])
     assert status == 2 and ran == []
     assert capsys.readouterr().err.strip().splitlines() == [
         "iesm: error: --seeds: seeds [2, 3] were used for tuning; report other seeds (or pass --allow-tuning-seeds)"]
+    assert study_main("demo", "A demo study.", demo_study(ran),
+                      ["--seeds", "2-3", "--allow-tuning-seeds", "--out", str(tmp_path / "out")]) == 0
+    assert ran == [[2, 3]]
+
+
+def test_an_unknown_profile_or_option_is_refused_with_status_2(tmp_path, capsys):
+    ran = []
+    assert study_main("demo", "A demo study.", demo_study(ran), ["--realism", "glossy", "--out", str(tmp_path)]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "iesm: error: --realism: no realism profile 'glossy'; choose from easy, realistic"]
+    assert study_main("demo", "A demo study.", demo_study(ran), ["--sedes", "10"]) == 2
+    assert "--sedes" in capsys.readouterr().err and ran == []
 
 
 def test_the_table_is_written_with_its_command_and_printed(tmp_path, capsys):
     out = tmp_path / "out"
-
-    def run(args, seeds):
-        write_table(args.out, "Demo", study_command("demo", args.seeds, args.realism, args.out), f"seeds {seeds}",
-                    {"seeds": seeds})
-
-    assert study_main("demo", "A demo study.", "10", str(out), run, ["--seeds", "10,12"]) == 0
+    assert study_main("demo", "A demo study.", demo_study([]), ["--seeds", "10,12", "--out", str(out)]) == 0
     table = (out / "table.md").read_text()
     assert f"`python -m iesm_agent.evals.studies.demo --seeds 10,12 --realism realistic --out {out.as_posix()}`" in table
     assert "seeds [10, 12]" in table and table in capsys.readouterr().out
+
+
+def test_every_study_takes_its_documented_command_line(tmp_path, capsys):
+    """Each study's own command line parses the documented options (and its extra ones) and
+    refuses tuning seeds before rendering anything."""
+    from iesm_agent.evals.studies import calibration, captions, mapping, retrieval, rooms, storage
+
+    for study in (calibration, captions, mapping, retrieval, rooms, storage):
+        argv = ["--seeds", "2", "--realism", "realistic", "--out", str(tmp_path / study.__name__)]
+        if study is mapping:
+            argv += ["--size", "small"]
+        assert study.main(argv) == 2, study.__name__
+        assert "seeds [2] were used for tuning" in capsys.readouterr().err
+        assert not (tmp_path / study.__name__).exists()
+    assert mapping.main(["--size", "huge"]) == 2
+    assert "huge" in capsys.readouterr().err
 
 
 def test_a_scene_that_cannot_be_made_is_skipped_and_listed():

@@ -74,7 +74,7 @@ def _print_table(summary: dict) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from ..evals.metrics import type_title
+    from ..evals.query_types import type_title
 
     table = Table(title="O-SR (%) by query type")
     table.add_column("variant", no_wrap=True)
@@ -96,7 +96,7 @@ def _print_groups(console, summary: dict) -> None:
     """Paraphrase consistency per variant (suites with groups) and each variant's worst groups."""
     from rich.table import Table
 
-    from ..evals.metrics import ordered_types, type_title
+    from ..evals.query_types import ordered_types, type_title
 
     grouped = {name: m["groups"] for name, m in summary["methods"].items() if "groups" in m}
     if not grouped:

@@ -19,7 +19,6 @@ import json
 import os
 import sys
 import tempfile
-from contextlib import contextmanager
 from pathlib import Path
 
 from .model_files import fingerprint, max_seq_length, model_dir
@@ -32,21 +31,13 @@ META_PROBE = "iesm_probe"
 INPUT_NAMES = ("input_ids", "attention_mask", "token_type_ids")
 
 
-@contextmanager
 def export_lock(path: Path):
-    """An exclusive advisory lock on `<path>.lock` (blocks while another process exports)."""
+    """A `filelock.FileLock` on `<path>.lock`, exclusive across processes on POSIX and Windows
+    alike (entering it blocks while another process exports)."""
+    from filelock import FileLock
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path.with_name(path.name + ".lock"), "a+b") as fh:
-        try:
-            import fcntl
-        except ImportError:  # no POSIX locks: the atomic rename alone keeps readers safe
-            yield
-            return
-        fcntl.flock(fh.fileno(), fcntl.LOCK_EX)
-        try:
-            yield
-        finally:
-            fcntl.flock(fh.fileno(), fcntl.LOCK_UN)
+    return FileLock(path.with_name(path.name + ".lock"))
 
 
 def _pooled_module():

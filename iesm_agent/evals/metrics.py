@@ -12,21 +12,8 @@ from collections import defaultdict
 from typing import Iterable, Optional, Sequence
 
 from .journal import ResultRecord
-
-QUERY_TYPES = ("o", "or", "od", "ord", "ard")
-TYPE_TITLES = {"o": "(o)", "or": "(o,r)", "od": "(o,d)", "ord": "(o,r,d)", "ard": "(a,r,d)", "s": "(s)"}
-UNTYPED = "-"
-
-
-def ordered_types(types: Iterable[str]) -> list[str]:
-    """The paper's five types in their order, then any other label alphabetically."""
-    types = set(types)
-    return [t for t in QUERY_TYPES if t in types] + sorted(types - set(QUERY_TYPES))
-
-
-def type_title(t: str) -> str:
-    """Column title of a query type: "(o,r)" for the paper's types, the label itself otherwise."""
-    return TYPE_TITLES.get(t, t)
+from .paraphrase import group_summary
+from .query_types import UNTYPED, ordered_types
 
 
 def osr(records: Sequence[ResultRecord]) -> float:
@@ -85,8 +72,6 @@ def summarize(records: Iterable[ResultRecord], variants: Sequence[str] = ()) -> 
     """`{"methods": {variant: {"overall": {...}, "by_type": {type: {"n", "osr"}}}}}`, variants
     in the order given (then any others in order of appearance). A variant whose records carry
     paraphrase groups also gets `"groups"` (`paraphrase.group_summary`)."""
-    from .paraphrase import group_summary
-
     grouped: dict[str, list[ResultRecord]] = {v: [] for v in variants}
     for record in records:
         grouped.setdefault(record.variant, []).append(record)

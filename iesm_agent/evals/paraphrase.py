@@ -12,7 +12,7 @@ from collections import defaultdict
 from typing import Sequence
 
 from .journal import ResultRecord
-from .metrics import UNTYPED, ordered_types
+from .query_types import UNTYPED, ordered_types
 
 #: worst groups listed per method
 WORST = 5

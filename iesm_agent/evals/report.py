@@ -11,7 +11,8 @@ from typing import Sequence
 from ..errors import IesmError
 from ..fileio import pyplot, save_figure, write_text
 from .journal import ResultRecord
-from .metrics import UNTYPED, ordered_types, summarize, type_title
+from .metrics import summarize
+from .query_types import UNTYPED, ordered_types, type_title
 from .significance import compare_to_first
 
 PLOT = "osr_by_type.png"

@@ -39,7 +39,7 @@ _NOT_LANDMARKS = {"wall", "floor", "ceiling", "doorway", "door frame", "rug", "c
 
 
 @dataclass(frozen=True)
-class SpatialQuery:
+class GeneratedSpatialQuery:
     """A generated query (one or more distinct wordings of it), the relation it states and the ids
     its geometry accepts (the target)."""
 
@@ -142,12 +142,12 @@ def _wordings(category: str, relation: str, mark: str, rng: random.Random, k: in
 
 
 def spatial_queries(store: MapStore, categories: Sequence[str], pool: Sequence[int], per_map: int,
-                    rng: random.Random, wordings: int = 1) -> list[tuple[int, SpatialQuery]]:
+                    rng: random.Random, wordings: int = 1) -> list[tuple[int, GeneratedSpatialQuery]]:
     """Up to `per_map` (instance id, query) pairs for the instances `pool` (ids, tried in the
     given order), each query with `wordings` distinct wordings; `categories` is the spoken category
     of every instance in scene order."""
     g = _Geometry(store, categories)
-    out: list[tuple[int, SpatialQuery]] = []
+    out: list[tuple[int, GeneratedSpatialQuery]] = []
     relations = ["on", "under", "above", "near", "closest", "farthest", "large", "small", "tall"]
     for ident in pool:
         if len(out) == per_map:
@@ -161,6 +161,6 @@ def spatial_queries(store: MapStore, categories: Sequence[str], pool: Sequence[i
             mark = _try(g, target, relation, rng)
             texts = () if mark is None else _wordings(g.cats[target], relation, mark, rng, wordings)
             if texts:
-                out.append((int(ident), SpatialQuery(texts=texts, relation=relation, accept=(int(ident),))))
+                out.append((int(ident), GeneratedSpatialQuery(texts=texts, relation=relation, accept=(int(ident),))))
                 break
     return out

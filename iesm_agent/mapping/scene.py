@@ -25,7 +25,7 @@ def grid_around(keys: np.ndarray, cell_size: float) -> GridSpec:
                             height=int(rows.max()) - r0 + 1 + MARGIN_CELLS, width=int(cols.max()) - c0 + 1 + MARGIN_CELLS)
 
 
-def flat_cells(keys: np.ndarray, grid: GridSpec) -> np.ndarray:
+def cells_of_keys(keys: np.ndarray, grid: GridSpec) -> np.ndarray:
     """Flat indices in `grid` of global cell `keys` built by `grid_around` with the same cell size."""
     rows, cols = rowcol_of(keys)
     r0 = round(grid.origin[1] / grid.cell_size)
@@ -49,7 +49,7 @@ def to_scene_map(d: InstanceDictionary, categories: list[str], category_embeddin
     instances, cells, ids, tops, obs_rows = [], [], [], [], []
     for i in range(len(d)):
         iid = i + 1
-        flat = flat_cells(d.keys[i], grid)
+        flat = cells_of_keys(d.keys[i], grid)
         rows, cols = rowcol_of(d.keys[i])
         label, alt = labels[i]
         instances.append(Instance(

@@ -7,19 +7,17 @@ Both are expressed as a one-expert fusion, so their U scores are the rank scores
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from ..config import RetrievalConfig
 from ..store.mapstore import CANDIDATE_FIELDS
 from .calls import Outcome, Session
+from .candidates import CandidateViews
 from .fusion import fuse
 from .replies import KEYWORD_SCHEMA, parse_keywords, ranking_schema
 
-if TYPE_CHECKING:
-    from .methods import CandidateViews
 
-
-async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], views: "CandidateViews",
+async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], views: CandidateViews,
                   config: RetrievalConfig) -> Outcome:
     """One call with every candidate field (`spr.j2`); its top-1 is the answer."""
     messages = session.render("spr.j2", query=query, candidates=views.fields(CANDIDATE_FIELDS), kappa=config.kappa)

@@ -5,19 +5,22 @@ The pick combines the store's own search (lexical + embeddings) with the lexicon
 the query: the categories it names (through synonyms and raw-label head nouns) and the ones its
 functional phrases imply ("something I can type on" -> keyboard, laptop). Instances whose label
 denotes such a category come first, so a target the query never spells out still reaches the
-experts.
+experts. `CandidateViews` renders the chosen candidates (and the landmarks the query names) for
+the methods' prompts.
 """
 
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
 from ..lexicon import load_lexicon
+from ..prompting import Fenced, FencedList
 from ..understanding import QueryInfo, label_concepts
 
 #: alternative labels (the mapper's runner-up categories) count this much
@@ -107,3 +110,36 @@ def reference_ids(store: Any, info: QueryInfo, exclude: tuple[int, ...], limit: 
     keep = (fit >= 0.3) & ~np.isin(index.ids, np.array(exclude, np.int64))
     order = np.lexsort((index.ids, -fit))
     return tuple(int(i) for i in index.ids[order][keep[order]][:limit])
+
+
+@dataclass
+class CandidateViews:
+    """The candidates' views for one query, rendered once per field set (experts sharing fields
+    share one fenced block). `cache` (id -> view per field set) may outlive the query."""
+
+    store: Any
+    info: QueryInfo
+    ids: tuple[int, ...]
+    cache: dict[tuple[str, ...], dict[int, Fenced]] = field(default_factory=dict)
+    #: never shown as references (the candidates before a cut to the context window); default `ids`
+    not_references: tuple[int, ...] | None = None
+    _built: dict[tuple[str, ...], FencedList] = field(default_factory=dict)
+    _landmarks: tuple[int, ...] | None = None
+
+    def fields(self, names: Sequence[str]) -> FencedList:
+        """The candidates' views with these fields, in candidate order."""
+        key = tuple(names)
+        if key not in self._built:
+            known = self.cache.setdefault(key, {})
+            for i in self.ids:
+                if i not in known:
+                    known[i] = Fenced(self.store.candidate_view(i, list(key)))
+            self._built[key] = FencedList(known[i] for i in self.ids)
+        return self._built[key]
+
+    def references(self, names: Sequence[str]) -> FencedList:
+        """Views of the instances outside the candidates that the query names (spatial
+        landmarks: `candidates.reference_ids`)."""
+        if self._landmarks is None:
+            self._landmarks = reference_ids(self.store, self.info, tuple(set(self.ids) | set(self.not_references or ())))
+        return FencedList(Fenced(self.store.candidate_view(i, list(names))) for i in self._landmarks)

@@ -9,52 +9,18 @@ and `keyword` (HOV-SG style). `register_method(name, factory)` adds one.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 from typing import Any, Protocol
 
 from ..config import RetrievalConfig
 from ..errors import IesmError
-from ..prompting import Fenced, FencedList
 from ..understanding import QueryInfo
 from .baselines import run_keyword, run_spr
 from .calls import Outcome, Session
-from .candidates import Candidates, reference_ids
+from .candidates import Candidates, CandidateViews
 from .experts import ExpertSpec
 from .mtefr import run_mtefr
-
-
-@dataclass
-class CandidateViews:
-    """The candidates' views for one query, rendered once per field set (experts sharing fields
-    share one fenced block). `cache` (id -> view per field set) may outlive the query."""
-
-    store: Any
-    info: QueryInfo
-    ids: tuple[int, ...]
-    cache: dict[tuple[str, ...], dict[int, Fenced]] = field(default_factory=dict)
-    #: never shown as references (the candidates before a cut to the context window); default `ids`
-    not_references: tuple[int, ...] | None = None
-    _built: dict[tuple[str, ...], FencedList] = field(default_factory=dict)
-    _landmarks: tuple[int, ...] | None = None
-
-    def fields(self, names: Sequence[str]) -> FencedList:
-        """The candidates' views with these fields, in candidate order."""
-        key = tuple(names)
-        if key not in self._built:
-            known = self.cache.setdefault(key, {})
-            for i in self.ids:
-                if i not in known:
-                    known[i] = Fenced(self.store.candidate_view(i, list(key)))
-            self._built[key] = FencedList(known[i] for i in self.ids)
-        return self._built[key]
-
-    def references(self, names: Sequence[str]) -> FencedList:
-        """Views of the instances outside the candidates that the query names (spatial
-        landmarks: `candidates.reference_ids`)."""
-        if self._landmarks is None:
-            self._landmarks = reference_ids(self.store, self.info, tuple(set(self.ids) | set(self.not_references or ())))
-        return FencedList(Fenced(self.store.candidate_view(i, list(names))) for i in self._landmarks)
 
 
 @dataclass

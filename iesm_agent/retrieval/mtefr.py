@@ -10,19 +10,16 @@ from __future__ import annotations
 
 import asyncio
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
 
 from ..config import RetrievalConfig
 from .calls import Outcome, Reply, Session
+from .candidates import CandidateViews
 from .experts import ExpertSpec
 from .fusion import fuse
 from .replies import GATE_SCHEMA, abstain_reason, parse_gate, ranking_schema
 
-if TYPE_CHECKING:
-    from .methods import CandidateViews
 
-
-def _expert_call(session: Session, spec: ExpertSpec, query: str, views: "CandidateViews", kappa: int,
+def _expert_call(session: Session, spec: ExpertSpec, query: str, views: CandidateViews, kappa: int,
                  hint: str = ""):
     template = session.prompts.template_for(spec.name, spec.template)
     messages = session.render(template, query=query, focus=spec.focus, hint=hint, expert=spec.name,
@@ -44,7 +41,7 @@ def _gate_weights(session: Session, reply: Reply, names: list[str]) -> tuple[dic
 
 
 async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], candidate_ids: Sequence[int],
-                    views: "CandidateViews", config: RetrievalConfig, gate: bool = True) -> Outcome:
+                    views: CandidateViews, config: RetrievalConfig, gate: bool = True) -> Outcome:
     """Gate + experts + fusion over `candidate_ids` (uniform weights without the gate when
     `gate` is False); model misbehaviour is recorded, never raised."""
     kappa, names = config.kappa, [s.name for s in specs]

@@ -20,10 +20,10 @@ from ..prompting import Fenced, PromptLibrary
 from ..providers import Model, get_model
 from ..understanding import QueryInfo, analyse_query
 from .calls import Outcome, Session
-from .candidates import Candidates, select_candidates
+from .candidates import Candidates, CandidateViews, select_candidates
 from .experts import load_experts
 from .fusion import fuse
-from .methods import CandidateViews, QueryContext, resolve_method
+from .methods import QueryContext, resolve_method
 from .result import RetrievalResult
 
 #: ids whose display names a result carries besides the experts' picks

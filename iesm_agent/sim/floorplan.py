@@ -43,7 +43,7 @@ class WallRun:
 
 
 @dataclass(frozen=True)
-class Door:
+class RunDoor:
     """A door gap of DOOR_WIDTH centred at `center` (metres along the run) in `run`."""
 
     run: WallRun
@@ -59,7 +59,7 @@ class FloorPlan:
     grid: np.ndarray
     labels: dict[int, str]
     runs: list[WallRun]
-    doors: list[Door]
+    doors: list[RunDoor]
     open_pairs: list[tuple[int, int]]
     cell: float = CELL
 
@@ -217,7 +217,7 @@ def _collinear(a, b, c) -> bool:
 
 
 def _choose_doors(labels: dict[int, str], runs: list[WallRun], open_pair: tuple[int, int] | None,
-                  rng: np.random.Generator) -> list[Door] | None:
+                  rng: np.random.Generator) -> list[RunDoor] | None:
     """Doors along a spanning tree (public-public, then public-private, then private-private
     edges), plus a few extra public-public doors; None when some room cannot be reached."""
     longest: dict[tuple[int, int], WallRun] = {}  # the longest shared run of each pair of rooms
@@ -244,7 +244,7 @@ def _choose_doors(labels: dict[int, str], runs: list[WallRun], open_pair: tuple[
     for pair in chosen:
         run = longest[pair]
         margin = 0.15 + DOOR_WIDTH / 2
-        doors.append(Door(run, float(rng.uniform(run.lo + margin, run.hi - margin))))
+        doors.append(RunDoor(run, float(rng.uniform(run.lo + margin, run.hi - margin))))
     return doors
 
 

@@ -17,7 +17,7 @@ from ...errors import IesmError
 from ...fileio import load_json
 from ...store.refs import open_map, resolve_map_path
 from ..journal import ResultRecord, read_journal
-from ..metrics import UNTYPED, ordered_types, type_title
+from ..query_types import UNTYPED, ordered_types, type_title
 from ..report import build_summary
 from ..runner import RESULTS, RUN_CONFIG
 from ..significance import paired_test

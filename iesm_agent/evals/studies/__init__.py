@@ -14,14 +14,15 @@ set on them); reported tables use seeds 10 and up (`check_seeds`).
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 import hashlib
 import json
 import sys
 import tempfile
 from pathlib import Path
-from typing import Callable, Iterator, Optional
+from typing import Annotated, Callable, Iterator, Optional
+
+import typer
 
 from ...errors import IesmError
 
@@ -49,13 +50,12 @@ def check_seeds(seeds: list[int], allow_tuning: bool) -> None:
                         None, "--seeds")
 
 
-def profile_arg(text: str) -> str:
-    """argparse type of --realism."""
+def check_profile(realism: str) -> None:
+    """Refuse a realism profile the simulator does not have (--realism)."""
     from ...sim.realism import PROFILES
 
-    if text not in PROFILES:
-        raise argparse.ArgumentTypeError(f"choose from {', '.join(PROFILES)}")
-    return text
+    if realism not in PROFILES:
+        raise IesmError(f"no realism profile {realism!r}; choose from {', '.join(PROFILES)}", None, "--realism")
 
 
 class SceneCache:
@@ -117,13 +117,12 @@ def write_table(out: Path, title: str, command: str, body: str, summary: dict) -
     write_text(out / "table.md", f"# {title}\n\nCommand: `{command}`\n\n{body.rstrip()}\n")
 
 
-def common_args(parser: argparse.ArgumentParser, default_seeds: str, default_out: str) -> None:
-    """--seeds, --realism, --out, --work, --allow-tuning-seeds."""
-    parser.add_argument("--seeds", default=default_seeds)
-    parser.add_argument("--realism", type=profile_arg, default="realistic")
-    parser.add_argument("--out", type=Path, default=Path(default_out))
-    parser.add_argument("--work", type=Path, default=None, help="keep (and reuse) rendered scenes and maps here")
-    parser.add_argument("--allow-tuning-seeds", action="store_true", help="for tuning runs; never for reported tables")
+#: the options every study takes (each study's command function declares them with its defaults)
+Seeds = Annotated[str, typer.Option(help="seeds as 10-14 or 10,12 (0-4 are tuning seeds: refused)")]
+Realism = Annotated[str, typer.Option(help="the simulator's realism profile: easy or realistic")]
+Out = Annotated[Path, typer.Option(help="folder for table.md and summary.json")]
+Work = Annotated[Optional[Path], typer.Option(help="keep (and reuse) rendered scenes and maps here")]
+AllowTuningSeeds = Annotated[bool, typer.Option("--allow-tuning-seeds", help="for tuning runs; never for reported tables")]
 
 
 def study_command(module: str, seeds_arg: str, realism: str, out: Path, *extra: str) -> str:
@@ -149,27 +148,33 @@ def scene_rows(seeds: list[int], score: Callable[[int], dict], describe: Callabl
     return rows, skipped
 
 
-def study_main(module: str, doc: str, default_seeds: str, default_out: str,
-               run: Callable[[argparse.Namespace, list[int]], object], argv: list[str] | None = None,
-               extra_args: Callable[[argparse.ArgumentParser], None] | None = None) -> int:
-    """The command line of study `module`: the common arguments (plus `extra_args`), seeds parsed
-    and checked, `run(args, seeds)`, then OUT/table.md printed; a user error is one line, exit 2."""
-    parser = argparse.ArgumentParser(prog=f"python -m iesm_agent.evals.studies.{module}",
-                                     description=doc.strip().split("\n\n")[0])
-    common_args(parser, default_seeds, default_out)
-    if extra_args is not None:
-        extra_args(parser)
-    args = parser.parse_args(argv)
+def run_checked(seeds_arg: str, realism: str, allow_tuning: bool, out: Path,
+                run: Callable[[list[int]], object]) -> None:
+    """The body of a study's command: seeds and profile checked before any work, `run(seeds)`,
+    then OUT/table.md printed; a user error (`IesmError`) is one line on stderr and exit status 2."""
     try:
-        seeds = parse_seeds(args.seeds)
-        check_seeds(seeds, args.allow_tuning_seeds)
-        run(args, seeds)
+        seeds = parse_seeds(seeds_arg)
+        check_seeds(seeds, allow_tuning)
+        check_profile(realism)
+        run(seeds)
     except IesmError as exc:
         print(f"iesm: error: {exc}", file=sys.stderr)
-        return 2
-    table = args.out / "table.md"
+        raise typer.Exit(2) from None
+    table = out / "table.md"
     if table.is_file():
         print(table.read_text(encoding="utf-8"))
+
+
+def study_main(module: str, doc: str, command: Callable[..., None], argv: list[str] | None = None) -> int:
+    """Run the typer command function `command` as `python -m iesm_agent.evals.studies.<module>`
+    (help from the first paragraph of `doc`) on `argv` (default: the process's arguments) and
+    return its exit status (2 for a usage error, as typer reports it)."""
+    app = typer.Typer(add_completion=False, pretty_exceptions_enable=False)
+    app.command(help=doc.strip().split("\n\n")[0])(command)
+    try:
+        app(args=argv, prog_name=f"python -m iesm_agent.evals.studies.{module}")
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else int(exc.code is not None)
     return 0
 
 

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import log_stderr, scene_frames, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+               study_main, write_table)
 
 
 def frame_top1(frames_dir: Path) -> dict:
@@ -84,9 +85,15 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: P
     return summary
 
 
+def command(seeds: Seeds = "10-14", realism: Realism = "realistic",
+            out: Out = Path("docs/results/calibration-realistic"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, realism, seeds, work, log=log_stderr))
+
+
 def main(argv: list[str] | None = None) -> int:
-    return study_main("calibration", __doc__, "10-14", "docs/results/calibration-realistic",
-                      lambda a, seeds: run_study(seeds, a.out, a.realism, a.seeds, a.work, log=log_stderr), argv)
+    return study_main("calibration", __doc__, command, argv)
 
 
 if __name__ == "__main__":

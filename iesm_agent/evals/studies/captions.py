@@ -15,7 +15,8 @@ import sys
 from pathlib import Path
 from typing import Optional
 
-from . import log_stderr, scene_frames, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+               study_main, write_table)
 
 
 def score_scene(frames: Path, built: Path) -> dict:
@@ -55,9 +56,15 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: O
     return summary
 
 
+def command(seeds: Seeds = "10-14", realism: Realism = "realistic",
+            out: Out = Path("docs/results/captions-realistic"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, realism, seeds, work, log=log_stderr))
+
+
 def main(argv: list[str] | None = None) -> int:
-    return study_main("captions", __doc__, "10-14", "docs/results/captions-realistic",
-                      lambda a, seeds: run_study(seeds, a.out, a.realism, a.seeds, a.work, log=log_stderr), argv)
+    return study_main("captions", __doc__, command, argv)
 
 
 if __name__ == "__main__":

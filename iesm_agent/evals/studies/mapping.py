@@ -10,19 +10,21 @@ object footprint; evals/mapping.py), and write OUT/table.md + OUT/summary.json.
 
 from __future__ import annotations
 
-import argparse
 import sys
 import time
+from enum import Enum
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
 import numpy as np
+import typer
 
 from ...config import MappingConfig
 from ...frames import FrameSet
 from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
-from . import log_stderr, scene_frames, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+               study_main, write_table)
 from ..baseline2d import PointwiseMap2D
 from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
 
@@ -164,14 +166,25 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
     return summary
 
 
-def main(argv: list[str] | None = None) -> int:
-    def extra(parser: argparse.ArgumentParser) -> None:
-        parser.add_argument("--size", default="small", choices=["small", "hm3d"])
-        parser.add_argument("--space", default=None, help="embedding space (default: the best available)")
+class SceneSize(str, Enum):
+    """--size: the simulator's scene sizes."""
 
-    return study_main("mapping", __doc__, "10-14", "docs/results/mapping-realistic",
-                      lambda a, seeds: run_study(seeds, a.out, realism=a.realism, seeds_arg=a.seeds, size=a.size,
-                                                 work=a.work, space=a.space, log=log_stderr), argv, extra)
+    small = "small"
+    hm3d = "hm3d"
+
+
+def command(seeds: Seeds = "10-14", realism: Realism = "realistic",
+            out: Out = Path("docs/results/mapping-realistic"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False,
+            size: Annotated[SceneSize, typer.Option(help="scene size")] = SceneSize.small,
+            space: Annotated[Optional[str], typer.Option(help="embedding space (default: the best available)")] = None) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, realism=realism, seeds_arg=seeds, size=size.value,
+                                            work=work, space=space, log=log_stderr))
+
+
+def main(argv: list[str] | None = None) -> int:
+    return study_main("mapping", __doc__, command, argv)
 
 
 if __name__ == "__main__":

@@ -16,7 +16,8 @@ import statistics
 from pathlib import Path
 from typing import Optional
 
-from . import scene_frames, scene_rows, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_frames, scene_rows, study_command,
+               study_main, write_table)
 
 TYPES = ("o", "or", "od", "ord", "ard")
 METHODS = ("mtefr", "spr", "keyword")
@@ -92,9 +93,15 @@ def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str,
     return summary
 
 
+def command(seeds: Seeds = "10-12", realism: Realism = "realistic",
+            out: Out = Path("docs/results/retrieval-realistic"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, work, seeds, realism))
+
+
 def main(argv: list[str] | None = None) -> int:
-    return study_main("retrieval", __doc__, "10-12", "docs/results/retrieval-realistic",
-                      lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
+    return study_main("retrieval", __doc__, command, argv)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,8 @@ import statistics
 from pathlib import Path
 from typing import Optional
 
-from . import scene_frames, scene_rows, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_frames, scene_rows, study_command,
+               study_main, write_table)
 
 METHODS = {"baseline": "per-cell labels (CLIP-like baseline)", "lsd": "LSD components + majority (paper)",
            "split": "LSD + contextual split (ours)"}
@@ -96,9 +97,15 @@ def run_study(seeds: list[int], out: Path, work: Optional[Path], seeds_arg: str,
     return summary
 
 
+def command(seeds: Seeds = "10-14", realism: Realism = "realistic",
+            out: Out = Path("docs/results/rooms-realistic"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, work, seeds, realism))
+
+
 def main(argv: list[str] | None = None) -> int:
-    return study_main("rooms", __doc__, "10-14", "docs/results/rooms-realistic",
-                      lambda a, seeds: run_study(seeds, a.out, a.work, a.seeds, a.realism), argv)
+    return study_main("rooms", __doc__, command, argv)
 
 
 if __name__ == "__main__":
