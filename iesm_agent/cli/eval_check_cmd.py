@@ -69,7 +69,8 @@ def _print_report(report) -> None:
         gained = sum(c.after_correct for c in d.changes)
         table.add_row(d.suite, d.method, str(d.n), _count(d.before, d.n), _count(d.after, d.n), f"{d.delta:+d}",
                       f"+{gained} / -{len(d.changes) - gained}", "FAIL" if d.failed else "ok")
-    console.print(table)
+    if table.row_count:
+        console.print(table)
     for d in report.deltas:
         for c in d.changes:
             console.print(f"  {'gained' if c.after_correct else 'LOST  '} {d.suite} {d.method} {c.id} "
