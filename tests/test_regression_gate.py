@@ -6,7 +6,7 @@ from pathlib import Path
 
 from iesm_agent.cli import run
 from iesm_agent.evals.regression import (SuiteSpec, Verdict, check, compare, disagreement, discover_suites,
-                                         read_verdicts, write_verdicts)
+                                         missing_maps, read_verdicts, write_verdicts)
 
 APARTMENT_SUITE = Path(__file__).resolve().parents[1] / "evals" / "apartment_suite.jsonl"
 
@@ -71,6 +71,9 @@ def test_missing_data_is_skipped_and_a_suite_without_reference_fails(tmp_path):
     assert by_name["here"].missing is None
     assert "nowhere/x.json is not present" in by_name["blind-round9"].missing
     assert by_name["nr3d_dev"].missing.startswith("no file") and not by_name["nr3d_dev"].keep_text
+    # a bare map name is a shipped map: a typo there is the suite loader's error, not missing data
+    (evals / "typo.jsonl").write_text(json.dumps({**line, "map": "apartmnt"}) + "\n")
+    assert missing_maps(evals / "typo.jsonl") is None
 
     results = {"here": _verdicts("mtefr", [True])}
     report = check(specs, results, tmp_path / "refs")
@@ -79,6 +82,16 @@ def test_missing_data_is_skipped_and_a_suite_without_reference_fails(tmp_path):
     # --update writes the missing reference; the next check passes
     assert check(specs, results, tmp_path / "refs", update=True).updated == ["here"]
     assert check(specs, results, tmp_path / "refs").passed
+
+
+def test_update_keeps_the_references_of_methods_not_run(tmp_path):
+    spec = SuiteSpec("s", tmp_path / "s.jsonl")
+    refs = _write_reference(tmp_path, "s", _verdicts("mtefr", [True, True]) + _verdicts("keyword", [False, True]))
+    report = check([spec], {"s": _verdicts("mtefr", [True, False])}, refs, update=True)
+    assert report.deltas[0].delta == -1  # what the update accepts is still shown
+    stored = {(v.method, v.id): v.correct for v in read_verdicts(refs / "s.jsonl")}
+    assert stored == {("mtefr", "q0"): True, ("mtefr", "q1"): False, ("keyword", "q0"): False,
+                      ("keyword", "q1"): True}
 
 
 def test_corpus_references_keep_no_query_text(tmp_path):

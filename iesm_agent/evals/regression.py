@@ -59,17 +59,20 @@ class SuiteSpec:
 
 
 def missing_maps(path: Path) -> Optional[str]:
-    """Why the suite at `path` cannot run on this machine (its file or a map it names is not
-    present), or None. Lines that are not JSON objects are left to the suite loader to report."""
+    """Why the suite at `path` cannot run on this machine (its file or a map file it names by a
+    path is not present), or None. Bare map names (shipped maps) and lines that are not JSON
+    objects are left to the suite loader, which reports what is wrong with them."""
     if not path.is_file():
         return f"no file {path}"
+    refs = {}
     for line in path.read_text(encoding="utf-8").splitlines():
         try:
             ref = json.loads(line).get("map") if line.strip() else None
         except (json.JSONDecodeError, AttributeError):
             continue
-        if not isinstance(ref, str):
-            continue
+        if isinstance(ref, str) and ("/" in ref or "\\" in ref):
+            refs[ref] = None
+    for ref in refs:
         try:
             resolve_map_path(ref, path.parent)
         except IesmError:
@@ -251,21 +254,24 @@ def reference_path(references_dir: Path, suite: str) -> Path:
 def check(specs: list[SuiteSpec], results: dict[str, list[Verdict]], references_dir: Path, *,
           update: bool = False) -> CheckReport:
     """Compare each suite's `results` with its reference verdicts (or, with `update`, rewrite the
-    references of the suites that ran, still reporting what changed against the old ones)."""
+    references of the suites and methods that ran, still reporting what changed against the old ones)."""
     report = CheckReport(skipped={s.name: s.missing for s in specs if s.missing is not None})
     for spec in specs:
         if spec.name not in results:
             continue
         current = results[spec.name]
         ref_file = reference_path(references_dir, spec.name)
-        if ref_file.exists():
-            report.deltas += compare(spec.name, read_verdicts(ref_file), current)
+        reference = read_verdicts(ref_file) if ref_file.exists() else None
+        if reference is not None:
+            report.deltas += compare(spec.name, reference, current)
         elif not update:
             report.unreferenced.append(spec.name)
         report.disagreements[spec.name] = {"non_spatial": disagreement(current),
                                            "all": disagreement(current, non_spatial=False)}
-        if update:
-            write_verdicts(ref_file, committable(spec, current))
+        if update:  # the references of methods this run did not score are kept
+            ran = {v.method for v in current}
+            kept = [v for v in reference or [] if v.method not in ran]
+            write_verdicts(ref_file, committable(spec, current) + kept)
             report.updated.append(spec.name)
     return report
 
