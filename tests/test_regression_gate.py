@@ -133,7 +133,7 @@ def test_end_to_end_on_a_tiny_suite(tmp_path, capsys):
     assert all(v.query for v in reference)
     assert run(args) == 0
     printed = capsys.readouterr().out
-    assert "skipped: the referring corpus" in printed and "tiny" in printed
+    assert f"skipped: nr3d_dev (no file {tmp_path / 'absent' / 'nr3d_dev.jsonl'})" in printed and "tiny" in printed
 
     # move the first query's target to an instance MTEFR did not pick: its verdict flips to wrong
     first = json.loads(lines[0])

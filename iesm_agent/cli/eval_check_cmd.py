@@ -33,12 +33,10 @@ def eval_check_command(
     started = time.perf_counter()
     with progress_bar("eval-check") as progress:
         task = progress.add_task("eval-check", total=None)
-        report, specs = run_check(evals, referring if referring.is_dir() else None, references, out,
+        report, specs = run_check(evals, referring, references, out,
                                   methods=split_methods(method), only=suite, update=update,
                                   concurrency=concurrency, on_start=lambda n: progress.update(task, total=n),
                                   on_result=lambda _record: progress.advance(task))
-    if not referring.is_dir():
-        print(f"skipped: the referring corpus (no folder {referring})")
     for name, reason in report.skipped.items():
         print(f"skipped: {name} ({reason})")
     _print_report(report)
@@ -75,7 +73,7 @@ def _print_report(report) -> None:
         for c in d.changes:
             console.print(f"  {'gained' if c.after_correct else 'LOST  '} {d.suite} {d.method} {c.id} "
                           f"{c.query!r}: predicted {c.before_predicted} -> {c.after_predicted}",
-                          markup=False, highlight=False)
+                          markup=False, highlight=False, soft_wrap=True)  # one line per query, for grep
         if d.new_ids or d.gone_ids:
             console.print(f"  {d.suite} {d.method}: {len(d.new_ids)} query(ies) without a reference, "
                           f"{len(d.gone_ids)} reference(s) without a query (run --update after editing a suite)",

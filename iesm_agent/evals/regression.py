@@ -80,14 +80,12 @@ def missing_maps(path: Path) -> Optional[str]:
     return None
 
 
-def discover_suites(evals_dir: Path, referring_dir: Optional[Path]) -> list[SuiteSpec]:
+def discover_suites(evals_dir: Path, referring_dir: Path) -> list[SuiteSpec]:
     """The shipped suites, the blind rounds (named `blind-<stem>`) and the referring corpus's
     `scanrefer_dev` and `nr3d_dev` (text never kept), each with `missing` set when it cannot run."""
     specs = [SuiteSpec(p.stem, p) for p in sorted(evals_dir.glob("*.jsonl"))]
     specs += [SuiteSpec(f"blind-{p.stem}", p) for p in sorted((evals_dir / "blind").glob("round*.jsonl"))]
-    if referring_dir is not None:
-        specs += [SuiteSpec(stem, referring_dir / f"{stem}.jsonl", keep_text=False)
-                  for stem in ("scanrefer_dev", "nr3d_dev")]
+    specs += [SuiteSpec(stem, referring_dir / f"{stem}.jsonl", keep_text=False) for stem in ("scanrefer_dev", "nr3d_dev")]
     for spec in specs:
         spec.missing = missing_maps(spec.path)
     return specs
@@ -276,7 +274,7 @@ def check(specs: list[SuiteSpec], results: dict[str, list[Verdict]], references_
     return report
 
 
-def run_check(evals_dir: Path, referring_dir: Optional[Path], references_dir: Path, out_dir: Path, *,
+def run_check(evals_dir: Path, referring_dir: Path, references_dir: Path, out_dir: Path, *,
               methods: Iterable[str] = DEFAULT_METHODS, only: Iterable[str] = (), update: bool = False,
               concurrency: int = 4, on_start=None, on_result=None) -> tuple[CheckReport, list[SuiteSpec]]:
     """The whole gate: discover, run, compare (or update); writes `out_dir/verdicts.jsonl` (every
