@@ -149,3 +149,16 @@ def test_end_to_end_on_a_tiny_suite(tmp_path, capsys):
     stored = json.loads((out / "regression.json").read_text())
     assert not stored["passed"] and {s["method"] for s in stored["suites"] if s["failed"]} >= {"mtefr"}
     assert stored["disagreement"]["tiny"]["non_spatial"]["n"] == 4
+
+
+def test_a_damaged_reference_is_one_line_before_the_run(tmp_path, capsys):
+    evals = tmp_path / "evals"
+    evals.mkdir()
+    (evals / "tiny.jsonl").write_text(APARTMENT_SUITE.read_text().splitlines()[0] + "\n")
+    (evals / "refs").mkdir()
+    (evals / "refs" / "tiny.jsonl").write_text('{"id": "x", "method": "mtefr"}\n')
+    assert run(["eval-check", "--evals", str(evals), "--referring", str(tmp_path), "--references",
+                str(evals / "refs"), "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert err.strip() == f"iesm: error: {evals / 'refs' / 'tiny.jsonl'}:line 1: correct: Field required"
+    assert not (tmp_path / "out").exists()

@@ -129,8 +129,8 @@ def read_verdicts(path: Path) -> list[Verdict]:
         try:
             verdicts.append(Verdict.model_validate(load_json(line, path, f"line {number}")))
         except ValidationError as exc:
-            message, _ = validation_message(exc)
-            raise IesmError(message, path, f"line {number}") from None
+            message, where = validation_message(exc)
+            raise IesmError(f"{where}: {message}" if where else message, path, f"line {number}") from None
     return verdicts
 
 
@@ -288,6 +288,9 @@ def run_check(evals_dir: Path, referring_dir: Path, references_dir: Path, out_di
             raise IesmError(f"unknown suite {unknown[0]!r} (known: {', '.join(s.name for s in specs)})", None,
                             "--suite")
         specs = [s for s in specs if s.name in wanted]
+    for spec in specs:  # a damaged reference is reported before the run, not after it
+        if spec.missing is None and reference_path(references_dir, spec.name).exists():
+            read_verdicts(reference_path(references_dir, spec.name))
     results = asyncio.run(run_suites(specs, methods, concurrency=concurrency, on_start=on_start,
                                      on_result=on_result))
     report = check(specs, results, references_dir, update=update)
