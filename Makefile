@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-fast lint test-llm bench install clean browser
+.PHONY: demo test test-fast lint test-llm bench install clean browser eval-suites
 
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
@@ -39,6 +39,14 @@ browser:
 # the fast subset: everything not marked slow
 test-fast: $(STAMP)
 	HF_HUB_OFFLINE=1 $(BIN)/python -m pytest -q -m "not slow"
+
+# the regression gate: every shipped suite, blind round and (where present) the referring corpus
+# with mtefr and spr on the offline model against evals/reference_verdicts/; exit 1 when a suite
+# drops by more than one query per hundred (docs/evaluation.md, "Regression gate");
+# `make eval-suites EVAL_CHECK=--update` rewrites the references
+EVAL_CHECK ?=
+eval-suites: $(STAMP)
+	HF_HUB_OFFLINE=1 $(BIN)/iesm eval-check $(EVAL_CHECK)
 
 lint: $(STAMP)
 	$(BIN)/ruff check iesm_agent tests benchmarks

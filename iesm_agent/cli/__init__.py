@@ -34,10 +34,10 @@ def _root(
     """Goal retrieval over instance-enriched 2.5D semantic maps (IESM + MTEFR)."""
 
 
-from . import (ask_cmd, caption_cmds, eval_cmds, html_cmds, mapping_cmds, nav_cmds, segment_cmds,  # noqa: E402
+from . import (ask_cmd, caption_cmds, eval_check_cmd, eval_cmds, html_cmds, mapping_cmds, nav_cmds, segment_cmds,  # noqa: E402
                serve_cmds, sim_cmds, store_cmds)
 
-for _module in (store_cmds, ask_cmd, eval_cmds, html_cmds, serve_cmds, sim_cmds, segment_cmds, mapping_cmds, nav_cmds,
+for _module in (store_cmds, ask_cmd, eval_cmds, eval_check_cmd, html_cmds, serve_cmds, sim_cmds, segment_cmds, mapping_cmds, nav_cmds,
                 caption_cmds):
     _module.register(app)
 
