@@ -25,6 +25,8 @@ _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
 _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
+#: prepositions that follow a verb of motion ("head to", "go into")
+_MOTION_PREPOSITIONS = frozenset({"to", "towards", "toward", "into", "onto"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 _NOUNS = ("NOUN", "PROPN")
@@ -85,6 +87,9 @@ class Structure:
         if k is None:
             return None
         word = self.words[k]
+        while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
+            k = word.head
+            word = self.words[k]
         if word.dep not in ("amod", "compound", "nmod", "poss", "nummod") or self.words[word.head].pos not in _NOUNS:
             return None
         noun = word.head
@@ -178,11 +183,11 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and not _names_after_copula(root):
         return "continuation", None
-    if root.pos_ not in ("VERB", "AUX") and subject is None:
-        return "request", root.i  # a bare noun phrase: "the lamp on the left", "something to sit on"
-    command = _command_verb(sent)
+    command = _command_verb(doc, sent)
     if command is not None:
         return "request", _object_of(doc, command)
+    if root.pos_ not in ("VERB", "AUX") and subject is None:
+        return "request", root.i  # a bare noun phrase: "the lamp on the left", "something to sit on"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and subject.lower_ in _PERSONAL:
         found = _object_of(doc, root)
@@ -206,18 +211,30 @@ def _names_after_copula(root) -> bool:
     return root.lemma_ == "be" and any(c.dep_ == "attr" and c.pos_ in _NOUNS for c in root.children)
 
 
-def _command_verb(sent):
+def _command_verb(doc, sent):
     """The imperative verb of the sentence: a base-form verb heading a clause with no subject of
-    its own, or with "you" ("could you take me to ..."); None when there is none."""
+    its own, or with "you" ("could you take me to ..."); of several, the last one with an object
+    ("go to the bedroom and find the lamp"); None when there is none."""
+    commands = []
     for t in sent:
-        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis"):
+        if _misread_verb(t):
+            commands.append(t)
+        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep"):
             continue
         subjects = [c for c in t.children if c.dep_ in ("nsubj", "nsubjpass")]
         if any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children):
             continue
         if not subjects or subjects[0].lower_ == "you":
-            return t
-    return None
+            commands.append(t)
+    return next((t for t in reversed(commands) if _object_of(doc, t) is not None), commands[0] if commands else None)
+
+
+def _misread_verb(token) -> bool:
+    """True for a verb of motion the tagger read as a noun ("Head to the sofa", "..., head to
+    the rug"): a bare noun opening a clause, with a preposition of motion after it."""
+    opens = token.i == token.sent.start or token.nbor(-1).is_punct
+    return (token.pos_ in _NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
+            and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS for c in token.children))
 
 
 def _object_of(doc, verb) -> int | None:
@@ -230,7 +247,7 @@ def _object_of(doc, verb) -> int | None:
     for child in verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
-            if obj is not None and obj.pos_ in _NOUNS + ("PRON",):
+            if obj is not None and (obj.pos_ in _NOUNS + ("PRON",) or obj.lower_ in STAND_INS):
                 return obj.i
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
             if clause is not None and _object_of(doc, clause) is not None:

@@ -73,54 +73,8 @@ _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
 
 
-#: question words that act as determiners before a noun ("which vase is ...", "what rug ...")
-_QUESTION_DETERMINERS = frozenset({"which", "what", "whichever"})
-_PRONOUNS = frozenset({"i", "you", "we", "they", "he", "she", "it", "i'd", "i'm", "you'd", "one", "is", "are", "do",
-                       "does", "can"})
-
-
-_CONJUNCTIONS = frozenset({"and", "or", "nor", "plus"})
 #: words that introduce a part or feature of the target ("with the red cover")
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
-
-
-def _next_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span]) -> Span | bool:
-    """What directly follows `span`: the category span starting there, True for a content word
-    no lexicon phrase covers (a noun the lexicon does not know), False for anything else."""
-    nxt = span.end
-    if nxt in categories:
-        return categories[nxt]
-    if nxt >= len(lemmas) or any(s.start <= nxt < s.end for s in categories.values()):
-        return False
-    word = lemmas[nxt]
-    stop = lex.words["skip"] | lex.words["boundaries"] | lex.words["abstract"]
-    return word.isalpha() and len(word) > 2 and word not in stop and not lex.phrases.get((word,))
-
-
-def _names_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span],
-                      head: Span | None) -> bool:
-    """A room word directly before a noun other than the target's ("the office papers") modifies
-    that noun; before the target ("the office bookcase"), or in a chain leading to it ("the
-    bathroom sink cabinet"), or in a place phrase ("in the attic") it says where the target is."""
-    if span.start > 0 and lemmas[span.start - 1] in _PLACE_PREPOSITIONS | {"at"}:
-        return False
-    nxt = _next_noun(lex, lemmas, span, categories)
-    if isinstance(nxt, Span):
-        return nxt is not head and not (head is not None and nxt.end == head.start)
-    return nxt
-
-
-def _modifies_other_noun(lex: Lexicon, lemmas: list[str], span: Span, categories: dict[int, Span], end: int) -> bool:
-    """An attribute outside the target phrase directly before another noun describes that noun,
-    not the target: a landmark ("beside the tall wardrobe") or a noun the lexicon does not know
-    ("hang my wet coat"); after "with" or "and" it is still the target's ("the mug with the blue
-    handle", "the oak and steel shelf")."""
-    if span.start < end:
-        return False
-    governor = next((lemmas[i] for i in range(span.start - 1, -1, -1) if lemmas[i] in lex.words["boundaries"]), None)
-    if governor is None or governor in _PART_WORDS or governor in _CONJUNCTIONS:
-        return False
-    return bool(_next_noun(lex, lemmas, span, categories))
 
 
 #: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
@@ -139,27 +93,6 @@ def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[st
             if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd):
                 return tokens[i:], tokens[:i]
     return tokens, []
-
-
-def _drop_question_word(tokens: list[str]) -> list[str]:
-    """A leading "which"/"what" before a noun is a determiner ("which vase is on the shelf"): dropped,
-    so the noun starts the target phrase; before a pronoun or verb ("what I need to ...") it stays."""
-    if len(tokens) > 1 and tokens[0] in _QUESTION_DETERMINERS and tokens[1] not in _PRONOUNS:
-        return tokens[1:]
-    return tokens
-
-
-def _place_phrase_last(lex: Lexicon, tokens: list[str]) -> list[str]:
-    """A leading place phrase moved after the request ("in the study, find the bookcase" ->
-    "find the bookcase in the study"), so the target phrase starts the query as usual."""
-    if not tokens or tokens[0] not in _PLACE_PREPOSITIONS:
-        return tokens
-    lemmas = [lex.lemma(t) for t in tokens]
-    room = next((s for s in lex.scan(lemmas[1:5]) if s.has("room")), None)
-    if room is None or room.end + 1 >= len(tokens):
-        return tokens
-    cut = room.end + 1
-    return tokens[cut:] + tokens[:cut]
 
 
 def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
@@ -195,6 +128,7 @@ class _Target:
     start: int
     end: int
     head: Span | None
+    word: int | None = None   # the parse's word index of the head noun
 
 
 def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) -> _Target | None:
@@ -209,7 +143,10 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     if index is None:
         return None
     head = next((s for s in spans if s.start <= index < s.end), None)
-    if head is None or not head.has("cat") or head.has("gen") or not set(head.values("cat")) - _UNSPECIFIC:
+    if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
+        start = next((i for i, a in enumerate(at) if a >= first), head.start)
+        return _Target(min(start, head.start), head.end, None, structure.target)
+    if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
     if any(s.has("cue") and s.end - s.start > 1 and s.start <= index < s.end for s in spans):
         return None  # the object of a use ("where can I take a bath")
@@ -220,11 +157,10 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     described = {s.end: s for s in spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)}
     while start in described and at[start] == at[start - 1] + len(surface[start - 1]) + 1:
         start = described[start].start  # adjectives right before the phrase are its own, whatever the parse
-    return _Target(start, head.end, head)
+    return _Target(start, head.end, head, structure.target)
 
 
-def _ordered_target(lex: Lexicon, surface: list[str], lemmas: list[str], spans: list[Span],
-                    clause: set[int], covered: set[int]) -> _Target:
+def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
     about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
@@ -236,26 +172,26 @@ def _ordered_target(lex: Lexicon, surface: list[str], lemmas: list[str], spans: 
         end = 0
     if clause:
         end = min(end, min(clause))
-    head = _head_span(spans, end, lemmas, lex.words["abstract"])
-    if head is not None and _after_abstract_clause(lex, lemmas, covered, head.start):
-        end, head = head.start, None  # "something (that) gives light": light is what it does
-    return _Target(0, end, head)
+    return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
 
 
 def _outside_target(structure: Structure, surface: list[str], span: Span, target: _Target,
-                    place_ok: bool = False) -> bool:
+                    described: frozenset[int], place_ok: bool = False) -> bool:
     """True when the words of `span` modify a noun other than the target ("beside the tall
-    wardrobe", "the office papers"); a part of the target ("the mug with the blue handle")
-    and a predicate ("it is white") stay the target's, and with `place_ok` so does a place
-    phrase ("in the bathroom area")."""
+    wardrobe", "the office papers", "hang my wet coat"); a part of the target ("the mug with the
+    blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
+    white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
+    `described` holds the offsets of attribute words ("in brown leather": a description)."""
     at = getattr(surface[span.end - 1], "at", None)
-    if at is None or structure.target is None:
-        return False
-    noun = structure.modified_noun(at)
-    if noun is None or noun == structure.target:
+    word = None if at is None else structure.index_at(at)
+    if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
+            and structure.words[word].pos == "NOUN":
+        return True  # a thing the request mentions, not a description ("you nuke popcorn in")
+    noun = None if at is None else structure.modified_noun(at)
+    if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
-    if owner.dep == "attr":  # "the dresser is a dark brown box": the target, named again
+    if owner.dep == "attr" or owner.start in described:  # "in brown leather": the material is the target's
         return False
     via = structure.words[owner.head]
     if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
@@ -263,12 +199,32 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
 
 
-@lru_cache(maxsize=4096)
-def analyse_query(text: str) -> QueryInfo:
-    """Targets, rooms, attributes and functional intent of a natural-language query; words
-    after an exclusion marker ("- not the metal one") only say what the target is not."""
-    lex = load_lexicon()
-    skip, bounds = lex.words["skip"], lex.words["boundaries"]
+def _names_a_kind(structure: Structure, surface: list[str], span: Span, target: _Target) -> bool:
+    """True for a room word that modifies the target noun itself ("the dining seat", "a kitchen
+    stool"): it names a kind of thing, whose room it implies, not where this one is."""
+    at = getattr(surface[span.end - 1], "at", None)
+    return at is not None and target.word is not None and structure.modified_noun(at) == target.word
+
+
+@dataclass
+class _Reading:
+    """The request's words as the span loop reads them: the spelt text, its parse, the surface
+    tokens (with offsets), their lemmas and lexicon spans, what only says why (`preamble`) and
+    the reading of what follows an exclusion marker (`ruled_out`)."""
+
+    text: str
+    structure: Structure
+    surface: list[str]
+    lemmas: list[str]
+    spans: list[Span]
+    preamble: list[str]
+    ruled_out: "QueryInfo | None"
+
+
+def _read_request(lex: Lexicon, text: str) -> _Reading:
+    """Spell, parse and tokenise `text`: the request's tokens without the words that only say
+    where to go or what to do ("take me to", "head over to"), with what follows an exclusion
+    marker read apart and what comes before the request phrase kept as the preamble."""
     corrected = normalise(lex.respell(text))
     structure = parse_request(corrected)
     tokens = _request_tokens(lex, corrected, structure.request)
@@ -283,33 +239,74 @@ def analyse_query(text: str) -> QueryInfo:
     else:
         preamble = []  # the parse's target comes first ("The settee shaped like an L. Go there.")
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
-    tokens = _strip_command(lex, _place_phrase_last(lex, _drop_question_word(strip_motion(tokens))))
-    surface = [t for t in tokens if t not in skip]
+    surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
-    spans = lex.scan(lemmas)
-    categories = {sp.start: sp for sp in spans if sp.has("cat")}
+    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas), preamble, ruled_out)
+
+
+def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
+    """The target phrase: from the parse when it names a known kind, else from the word order;
+    its `word` is the parse's word for the head noun either way."""
+    parsed = _parsed_target(reading.structure, reading.surface, reading.spans)
+    if parsed is not None:
+        return parsed
+    target = _ordered_target(lex, reading.lemmas, reading.spans, clause)
+    word = reading.structure.target  # "the thing", "something": the parse's word all the same
+    if target.head is not None:
+        at = getattr(reading.surface[target.head.end - 1], "at", None)
+        word = None if at is None else reading.structure.index_at(at)
+    return _Target(target.start, target.end, target.head, word)
+
+
+@lru_cache(maxsize=4096)
+def analyse_query(text: str) -> QueryInfo:
+    """Targets, rooms, attributes and functional intent of a natural-language query; words
+    after an exclusion marker ("- not the metal one") only say what the target is not."""
+    lex = load_lexicon()
+    reading = _read_request(lex, text)
     info = QueryInfo(text=text)
-    if ruled_out is not None:
-        info.excluded_targets = frozenset(ruled_out.targets)
-        info.excluded_attrs = frozenset(ruled_out.attrs)
-    clause = _landmark_clauses(surface, categories, clause_final_words(corrected))
-    covered: set[int] = set()
-    for s in spans:
-        covered.update(range(s.start, s.end))
-    parsed = _parsed_target(structure, surface, spans)
-    target = parsed or _ordered_target(lex, surface, lemmas, spans, clause, covered)
-    end, head = target.end, target.head
-    info.abstract = any(t in lex.words["abstract"] for t in lemmas[target.start:max(end, 1)])
+    if reading.ruled_out is not None:
+        info.excluded_targets = frozenset(reading.ruled_out.targets)
+        info.excluded_attrs = frozenset(reading.ruled_out.attrs)
+    categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
+    clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
+    target = _locate_target(lex, reading, clause)
+    info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
+    afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
+    covered = {i for s in reading.spans for i in range(s.start, s.end)}
+    cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
+    for positions, idx in lex.gapped_cues(reading.lemmas):
+        if not cue_covered.intersection(positions):  # a contiguous cue already read these words
+            _add_entry(afford, lex.affordances[int(idx)], 0.8)
+            covered.update(positions)
+    if reading.preamble:  # "I'm chilly - bring me to ...", "It's upstairs in the study.": why and where
+        context = analyse_query(" ".join(reading.preamble))
+        scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
+        for concept, weight in context.afford.items():  # never above what the request itself asks
+            afford[concept] = max(afford.get(concept, 0.0), scale * weight)
+        if not info.rooms:
+            info.rooms = dict(context.rooms)
+            info.room_phrase = context.room_phrase
+    if afford:
+        top = max(afford.values())
+        info.afford = {c: w / top for c, w in afford.items()}
+    info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
+    _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
+    return info
+
+
+def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
+                info: QueryInfo) -> tuple[dict[str, float], list[Span], set[str]]:
+    """Fill `info` from the lexicon spans: the head's categories, rooms, attributes of the target
+    and the landmarks named beside it; return (function evidence, attribute spans, landmark words)."""
+    surface, lemmas, head = reading.surface, reading.lemmas, target.head
     afford: dict[str, float] = {}
     landmark_words: set[str] = set()
     attr_spans: list[Span] = []
-    cue_covered: set[int] = set()
-    for s in spans:
-        if s.has("cue"):
-            cue_covered.update(range(s.start, s.end))
-
-    for s in spans:
-        in_target = target.start <= s.start and s.end <= end
+    described = frozenset(getattr(surface[i], "at", -1) for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
+                          for i in range(s.start, s.end))
+    for s in reading.spans:
+        in_target = target.start <= s.start and s.end <= target.end
         if s is head:
             info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
             info.target_phrase = " ".join(surface[s.start:s.end])
@@ -323,17 +320,17 @@ def analyse_query(text: str) -> QueryInfo:
             _add_entry(afford, lex.generic[info.generic], 1.0)
             continue
         if s.has("room") and not (in_target and s.has("cat")):
-            if (_outside_target(structure, surface, s, target, place_ok=True) if parsed
-                    else _names_other_noun(lex, lemmas, s, categories, head)):
-                continue  # "a case for the office papers": the papers' room, not the target's
-            for r in s.values("room"):
-                info.rooms[r] = 1.0
+            if _outside_target(reading.structure, surface, s, target, described, place_ok=True):
+                continue  # "a case for the office papers": the papers' room
+            if _names_a_kind(reading.structure, surface, s, target):
+                for r in s.values("room"):  # "the dining seat": where such seats usually are
+                    info.rooms.setdefault(r, 0.5)
+                continue
+            info.rooms.update({r: 1.0 for r in s.values("room")})
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr and not s.has("cue") and not in_target and (
-                _outside_target(structure, surface, s, target) if parsed
-                else _modifies_other_noun(lex, lemmas, s, categories, end)):
+        if attr and not s.has("cue") and not in_target and _outside_target(reading.structure, surface, s, target, described):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs.extend(kv for kv in attr if kv not in info.attrs)
         if attr:
@@ -341,37 +338,26 @@ def analyse_query(text: str) -> QueryInfo:
         if attr and not s.has("cue"):
             continue
         if s.has("cue") and s.start not in clause:
-            scale = 1.0 if s.end - s.start > 1 else 0.8
             for idx in s.values("cue"):
-                _add_entry(afford, lex.affordances[int(idx)], scale)
+                _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
         if s.has("cat") and not in_target:
-            for c in s.values("cat"):
-                if c not in _UNSPECIFIC:
-                    info.targets.setdefault(c, _THEME_WEIGHT)
-            # a landmark ("the lamp next to the bed"): captions that mention it are evidence
-            landmark_words.update(lemmas[s.start:s.end])
+            info.targets.update({c: info.targets.get(c, _THEME_WEIGHT) for c in s.values("cat") if c not in _UNSPECIFIC})
+            landmark_words.update(lemmas[s.start:s.end])  # "the lamp next to the bed": captions naming it count
         elif s.has("gen"):
             _add_entry(afford, lex.generic[s.values("gen")[0]], 0.8)
+    return afford, attr_spans, landmark_words
 
-    for positions, idx in lex.gapped_cues(lemmas):
-        if not cue_covered.intersection(positions):  # a contiguous cue already read these words
-            _add_entry(afford, lex.affordances[int(idx)], 0.8)
-            covered.update(positions)
-    if preamble:  # "I'm chilly - bring me to ...", "It's upstairs in the study.": why and where, not what
-        context = analyse_query(" ".join(preamble))
-        scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
-        for concept, weight in context.afford.items():  # never above what the request itself asks
-            afford[concept] = max(afford.get(concept, 0.0), scale * weight)
-        if not info.rooms:
-            info.rooms = dict(context.rooms)
-            info.room_phrase = context.room_phrase
-    if afford:
-        top = max(afford.values())
-        info.afford = {c: w / top for c, w in afford.items()}
-    info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
+
+def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[int], attr_spans: list[Span],
+                landmark_words: set[str], info: QueryInfo) -> None:
+    """Fill `info`'s attribute slots, loose words and the words the lexicon does not know (a
+    target or room phrase to ground in the map)."""
+    surface, lemmas = reading.surface, reading.lemmas
+    bounds = lex.words["boundaries"]
     slots, used = read_slots(lex, lemmas, attr_spans)
     info.slots = tuple(dict.fromkeys(slots))
-    stop = skip | bounds | lex.words["abstract"] | lex.words["color_suffixes"] | lex.words["imitation_suffixes"]
+    stop = (lex.words["skip"] | bounds | lex.words["abstract"] | lex.words["color_suffixes"]
+            | lex.words["imitation_suffixes"])
     info.extra = frozenset(t for i, t in enumerate(lemmas)
                            if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
     words = set(info.extra) | landmark_words
@@ -379,13 +365,12 @@ def analyse_query(text: str) -> QueryInfo:
         words.update(slot.base.split())
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
     if not info.named and info.generic is None and not info.afford:
-        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, end, whole=False)
+        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
     if not any(w >= 1.0 for w in info.rooms.values()):
         place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
         if place is not None:
             stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
             info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
-    return info
 
 
 #: share of an affordance weight a kind gets as functional kin of the named category
@@ -450,12 +435,6 @@ def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozens
         if cats and not s.has("gen") and not modifier:
             head = s
     return head
-
-
-def _after_abstract_clause(lex: Lexicon, lemmas: list[str], covered: set[int], start: int) -> bool:
-    """An abstract noun comes before `start` with an unknown (verb-like) word in between."""
-    marks = [i for i in range(start) if lemmas[i] in lex.words["abstract"]]
-    return bool(marks) and any(i not in covered for i in range(marks[0] + 1, start))
 
 
 def _implied_rooms(lex: Lexicon, words: list[str], info: QueryInfo) -> None:
