@@ -1,7 +1,8 @@
 """Atomic file output and validated JSON input, shared by every stage.
 
 Every file the toolkit writes goes through `atomic_write`: the content is written to a temporary
-file beside the target (named `.NAME.iesm-tmp.PID.*`) and renamed into place, so a killed process
+file beside the target (named `.NAME.iesm-tmp.PID.*`, with the mode the umask gives an ordinary
+new file) and renamed into place, so a killed process
 never leaves a half-written output; the temporary files a killed process left behind are removed
 by the next write of that target (`clean_stale_temps`).
 
@@ -39,6 +40,27 @@ MAX_ARRAY_BYTES = 1024 * 1024 * 1024
 
 ModelT = TypeVar("ModelT", bound=BaseModel)
 ErrorT = type[IesmError]
+
+
+def _umask() -> int:
+    """The process's file-creation mask: from /proc (Linux, no change to the process), else read
+    by setting it and setting it back."""
+    try:
+        with open("/proc/self/status", encoding="ascii", errors="replace") as status:
+            for line in status:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def _umask_mode(path: str | Path, mode: int) -> None:
+    """Give `path` (made by mkstemp / mkdtemp, mode 0600 / 0700) the mode an ordinary `open` /
+    `mkdir` would: `mode` (0666 for a file, 0777 for a directory) less the umask."""
+    os.chmod(path, mode & ~_umask())
 
 
 def _temp_prefix(path: Path) -> str:
@@ -86,7 +108,9 @@ def temp_dir(path: str | Path) -> Path:
     the same target are cleaned first); the caller renames it into place or removes it."""
     path = Path(path)
     clean_stale_temps(path)
-    return Path(tempfile.mkdtemp(prefix=_temp_prefix(path), dir=path.resolve().parent))
+    stage = Path(tempfile.mkdtemp(prefix=_temp_prefix(path), dir=path.resolve().parent))
+    _umask_mode(stage, 0o777)
+    return stage
 
 
 def atomic_write(path: str | Path, write: Callable[[Path], None]) -> None:
@@ -97,6 +121,7 @@ def atomic_write(path: str | Path, write: Callable[[Path], None]) -> None:
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=_temp_prefix(path), suffix=path.suffix or ".tmp")
     os.close(fd)
     try:
+        _umask_mode(tmp, 0o666)  # the file a user shares is readable as the umask says, not 0600
         write(Path(tmp))
         os.replace(tmp, path)
     except BaseException:

@@ -15,6 +15,9 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 from ..errors import IesmError
 from ..retrieval.result import CallTrace
 
+#: a run directory's journal and its configuration (file names)
+RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
+
 
 class KeptCall(CallTrace):
     """A model call as journaled: the trace, plus the rendered prompt messages

@@ -22,12 +22,12 @@ from ..errors import IesmError
 from ..fileio import load_json, validation_message
 from ..providers.base import Model
 from ..retrieval.methods import is_method_name
-from .journal import ResultRecord, append_record, read_journal, repair_journal
+from .journal import RESULTS, RUN_CONFIG, ResultRecord, append_record, read_journal, repair_journal
 from .prompt_log import PromptRecorder, journaled_calls, template_hashes
-from .report import build_summary, write_outputs
+from .report import write_outputs
+from .summary import build_summary
 from .suite import MapRegistry, Suite, SuiteEntry, load_suites
 
-RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
 
 
 class Variant(BaseModel):

@@ -116,7 +116,7 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
             text = path.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
             raise IesmError(f"cannot read suite: {exc}", path) from exc
-        for number, line in enumerate(text.splitlines(), start=1):
+        for number, line in enumerate(text.split("\n"), start=1):  # JSON Lines: U+2028 / U+0085 are text
             if not line.strip():
                 continue
             try:

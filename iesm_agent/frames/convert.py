@@ -6,7 +6,6 @@ leaves nothing behind."""
 from __future__ import annotations
 
 import shutil
-import tempfile
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -18,7 +17,7 @@ from ..errors import IesmError
 from .checks import BadFrame, SkipLog, check_depth_unit, pose_reason
 from .gravity import Alignment, estimate_alignment, identity
 from .ours import Frame, SceneMeta, write_frame, write_frame_set
-from ..fileio import read_image
+from ..fileio import read_image, temp_dir
 from .recording import Recording
 
 ALIGN_SAMPLE = 30  # frames used to find the floor
@@ -39,12 +38,13 @@ class ImportReport:
 
 @contextmanager
 def staged_directory(target: Path) -> Iterator[Path]:
-    """A fresh directory beside `target` that replaces `target` when the block succeeds and is
-    removed when it fails."""
+    """A fresh directory beside `target` (`.NAME.iesm-tmp.PID.*`, so that a later run removes it
+    when this process was killed) that replaces `target` when the block succeeds and is removed
+    when it fails."""
     target = Path(target)
     if not target.parent.resolve().is_dir():
         raise IesmError("output directory's parent does not exist", target)
-    stage = Path(tempfile.mkdtemp(dir=target.parent, prefix=f".{target.name}.iesm-tmp."))
+    stage = temp_dir(target)
     try:
         yield stage
         if target.exists():

@@ -16,11 +16,10 @@ from pathlib import Path
 from ...errors import IesmError
 from ...fileio import load_json
 from ...store.refs import open_map, resolve_map_path
-from ..journal import ResultRecord, read_journal
+from ..journal import RESULTS, RUN_CONFIG, ResultRecord, read_journal
 from ..metrics import UNTYPED, ordered_types, type_title
-from ..report import build_summary
-from ..runner import RESULTS, RUN_CONFIG
 from ..significance import paired_test
+from ..summary import build_summary
 from .shapes import map_layers
 
 #: the most (query, variant) rows one page shows
