@@ -496,7 +496,7 @@ def test_sim_force_only_replaces_a_frame_directory(tmp_path, capsys):
 
 
 def test_sim_force_accepts_a_frame_directory_of_ours(tmp_path):
-    from iesm_agent.cli.sim_cmds import _looks_like_frames
+    from iesm_agent.cli.outputs import looks_like_frames as _looks_like_frames
 
     d = write_tiny_frames(tmp_path / "f")
     assert _looks_like_frames(d)

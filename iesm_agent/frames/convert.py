@@ -5,6 +5,7 @@ leaves nothing behind."""
 
 from __future__ import annotations
 
+import os
 import shutil
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -47,9 +48,13 @@ def staged_directory(target: Path) -> Iterator[Path]:
     stage = temp_dir(target)
     try:
         yield stage
-        if target.exists():
-            shutil.rmtree(target)
-        stage.rename(target)
+        if target.exists():  # the caller checked it may be replaced (cli.outputs.check_frame_output)
+            old = stage.with_name(stage.name + ".old")
+            os.replace(target, old)
+            os.replace(stage, target)
+            shutil.rmtree(old)
+        else:
+            os.replace(stage, target)
     except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
         raise
