@@ -43,6 +43,12 @@ ModelT = TypeVar("ModelT", bound=BaseModel)
 ErrorT = type[IesmError]
 
 
+def utf8_text(text: str) -> str:
+    """`text` as valid UTF-8 text: a path's undecodable bytes (Python's surrogate escapes) and
+    other lone surrogates become U+FFFD, so the text can be written to JSON or a page."""
+    return text.encode("utf-8", "surrogatepass").decode("utf-8", "replace")
+
+
 def _umask() -> int:
     """The process's file-creation mask: from /proc (Linux, no change to the process), else read
     by setting it and setting it back."""

@@ -12,6 +12,7 @@ from typing import Optional
 import typer
 
 from ..errors import IesmError
+from ..fileio import utf8_text
 from .outputs import check_frame_output
 
 
@@ -126,7 +127,8 @@ def register(app: typer.Typer) -> None:
                 t0 = time.perf_counter()
                 with progress_bar("read") as progress:
                     task = progress.add_task(f"read {kind}", total=len(recording))
-                    imported = import_recording(recording, stage, scene_id=output.name, embedding_space="none",
+                    imported = import_recording(recording, stage, scene_id=utf8_text(output.name),
+                                                embedding_space="none",
                                                 categories=[], skip_bad=skip_bad, align=not no_align,
                                                 on_frame=lambda _f: progress.advance(task))
                 timings["read + check + align + write"] = (time.perf_counter() - t0) / imported.n_frames

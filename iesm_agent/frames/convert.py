@@ -18,7 +18,7 @@ from ..errors import IesmError
 from .checks import BadFrame, SkipLog, check_depth_unit, pose_reason
 from .gravity import Alignment, estimate_alignment, identity
 from .ours import Frame, SceneMeta, write_frame, write_frame_set
-from ..fileio import read_image, temp_dir
+from ..fileio import read_image, temp_dir, utf8_text
 from .recording import Recording
 
 ALIGN_SAMPLE = 30  # frames used to find the floor
@@ -116,6 +116,7 @@ def import_recording(rec: Recording, out_dir: Path, *, scene_id: str, embedding_
     source = {"layout": rec.layout, "path": str(rec.directory), "notes": "; ".join(rec.notes),
               "alignment": alignment.description, "alignment_method": alignment.method,
               "transform": " ".join(f"{v:.9g}" for v in alignment.transform.ravel()), **log.as_meta()}
+    source = {k: utf8_text(v) for k, v in source.items()}  # a path need not be UTF-8
     write_frame_set(out_dir, SceneMeta(scene_id=scene_id, n_frames=n, embedding_space=embedding_space,
                                        categories=categories, source=source), rec.intrinsics)
     return ImportReport(n, log, alignment, list(rec.notes))
