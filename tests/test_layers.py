@@ -84,3 +84,42 @@ def test_the_layer_check_reports_an_upward_import_and_an_import_by_name():
     assert _violations("from ..store import model\n", "iesm_agent.mapping.probe") == []
     assert _violations("import importlib\nimportlib.import_module('iesm_agent.evals')\n",
                        "iesm_agent.mapping.probe") == ["iesm_agent.mapping.probe imports a module by name"]
+
+
+def _module_graph(package: str) -> dict[str, set[str]]:
+    """Module -> the modules of `package` it imports (any import, at top level or inside a
+    function: both make a loop a reader must untangle)."""
+    graph: dict[str, set[str]] = {}
+    modules = {_module_of(p)[0]: p for p in (ROOT / package).rglob("*.py")}
+    for module, path in modules.items():
+        targets = set()
+        for target, _line in _imports(path.read_text(encoding="utf-8"), *_module_of(path)):
+            while target and target not in modules:  # `from .html import X` names a package's module
+                target = target.rpartition(".")[0]
+            if target and target != module:
+                targets.add(target)
+        graph[module] = targets
+    return graph
+
+
+def _reaches(graph: dict[str, set[str]], start: str, goal: str) -> bool:
+    seen, todo = set(), [start]
+    while todo:
+        here = todo.pop()
+        if here == goal:
+            return True
+        if here not in seen:
+            seen.add(here)
+            todo += graph.get(here, ())
+    return False
+
+
+def test_the_report_is_not_in_an_import_loop():
+    """Issue 30: evals/report.py -> html/ -> html/run_data.py -> runner.py -> report.py was a loop;
+    the shared pieces (build_summary, the run's file names) now sit below all of them."""
+    graph = _module_graph("evals")
+    report = "iesm_agent.evals.report"
+    assert _reaches(graph, report, "iesm_agent.evals.html.run_data")  # the page is still written
+    looped = [m for m in graph[report] if _reaches(graph, m, report)]
+    assert not looped, f"report.py is in a loop through {looped}"
+    assert not _reaches(graph, "iesm_agent.evals.html.run_data", "iesm_agent.evals.runner")
