@@ -111,3 +111,15 @@ def test_a_broken_map_is_an_error_of_the_lines_that_use_it(tmp_path, tiny_map):
     suite = load_suites([path], skip_invalid=True)
     assert [e.query.id for e in suite.entries] == ["q1"]
     assert [e.where for e in suite.errors] == ["line 2", "line 3"]
+
+
+@pytest.mark.parametrize("char", ["\u2028", "\u2029", "\u0085", "\x0b", "\x0c", "\x1c"])
+def test_a_query_holding_a_unicode_line_separator_is_one_line(tmp_path, tiny_map, char):
+    """Issue 31 (10): JSON Lines end at "\\n" only; `splitlines()` cut a query holding U+2028 or
+    U+0085 (valid, unescaped, in JSON text) in two and refused the line."""
+    path = tmp_path / "suite.jsonl"
+    path.write_text(json.dumps({"id": "q1", "map": "maps/tiny.iesm", "query": f"the chair{char}by the door",
+                                "type": "o", "target": 1, "accept": [1]}, ensure_ascii=False) + "\r\n",
+                    encoding="utf-8", newline="")
+    suite = load_suites([path])
+    assert [e.query.query for e in suite.entries] == [f"the chair{char}by the door"]
