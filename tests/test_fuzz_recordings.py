@@ -237,6 +237,8 @@ def test_paths_that_are_not_utf8_work(tmp_path, capsys):
     assert run(segment(src, out)) == 0, capsys.readouterr().err
     assert run(["build-map", str(out), "-o", str(base / "m\udcff.iesm")]) == 0, capsys.readouterr().err
     assert (base / "m\udcff.iesm").is_file()
+    assert run(["view", str(base / "m\udcff.iesm"), "-o", str(base / "v\udcff.html")]) == 0, capsys.readouterr().err
+    assert "\ufffd" in (base / "v\udcff.html").read_text(encoding="utf-8")  # the path, shown as text
 
 
 # ------------------------------------------------------------------------------ segment -o (5)
