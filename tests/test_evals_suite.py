@@ -123,3 +123,13 @@ def test_a_query_holding_a_unicode_line_separator_is_one_line(tmp_path, tiny_map
                     encoding="utf-8", newline="")
     suite = load_suites([path])
     assert [e.query.query for e in suite.entries] == [f"the chair{char}by the door"]
+
+
+def test_a_suite_that_is_a_fifo_or_a_device_is_refused_not_read(tmp_path):
+    import os
+
+    fifo = tmp_path / "fifo.jsonl"
+    os.mkfifo(fifo)
+    for path in (fifo, "/dev/zero"):
+        with pytest.raises(IesmError, match="cannot read suite: not a regular file"):
+            load_suites([path])
