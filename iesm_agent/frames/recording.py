@@ -14,7 +14,7 @@ import numpy as np
 from pydantic import ValidationError
 
 from ..errors import IesmError
-from ..fileio import MAX_IMAGE_PIXELS, image_size, read_image, read_text
+from ..fileio import image_size, read_image, read_text
 from .checks import BadFrame, SkipLog, check_depth_scale, check_intrinsics, check_pose, clean_depth
 from .ours import Frame, Intrinsics
 
@@ -26,6 +26,10 @@ MAX_LIST_LINES = 4 * MAX_FRAMES
 MAX_MATRIX_BYTES = 64 * 1024
 #: frames whose depth image sizes are compared to find the recording's size
 SIZE_SAMPLE = 31
+#: most pixels of a frame (its depth image: what segmentation and mapping work at) so that one
+#: frame's processing stays far under 1 GB (about 64 bytes a pixel); depth sensors give at most
+#: about 1 M, Replica's renders 0.8 M. Colour images (resized to the depth image) may be larger.
+MAX_FRAME_PIXELS = 2048 * 2048
 
 
 @dataclass
@@ -58,9 +62,9 @@ class Recording:
 
     def __post_init__(self) -> None:
         self.depth_scale = check_depth_scale(self.depth_scale, self.directory, "depth scale")
-        if self.intrinsics.width * self.intrinsics.height > MAX_IMAGE_PIXELS:
+        if self.intrinsics.width * self.intrinsics.height > MAX_FRAME_PIXELS:
             raise IesmError(f"frames of {self.intrinsics.width} x {self.intrinsics.height} pixels are more than the "
-                            f"{MAX_IMAGE_PIXELS:,} read", self.directory)
+                            f"{MAX_FRAME_PIXELS:,} a depth frame may have", self.directory)
         check_intrinsics(self.intrinsics, self.directory)
         if len(self.refs) > MAX_FRAMES:
             raise IesmError(f"{len(self.refs):,} frames are more than the {MAX_FRAMES:,} one recording may have "
@@ -76,7 +80,7 @@ class Recording:
             raise BadFrame(ref.pose_error or "no pose", ref.pose_source)
         pose = check_pose(ref.pose, ref.pose_source)
         hw = (self.intrinsics.height, self.intrinsics.width)
-        raw = read_image(ref.depth, color=False, error=BadFrame)
+        raw = read_image(ref.depth, color=False, error=BadFrame, max_pixels=MAX_FRAME_PIXELS)
         if raw.shape[:2] != hw:
             raise BadFrame(f"depth image is {raw.shape[:2]}, the intrinsics say {hw}", ref.depth)
         if raw.dtype not in (np.uint16, np.float32, np.float64, np.int32):
