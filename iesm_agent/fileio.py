@@ -269,7 +269,7 @@ def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError,
     if width * height > max_pixels or not width or not height:
         raise error(f"{kind.upper()} declares {width} x {height} pixels (at most {max_pixels:,} are read)", path)
     image = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
-    if image is None or image.shape[:2] != (height, width):
+    if image is None or image.shape[:2] not in ((height, width), (width, height)):  # EXIF may turn a JPEG
         raise error("not a readable image (damaged data)", path)
     return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
 
