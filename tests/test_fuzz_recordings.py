@@ -362,3 +362,43 @@ def test_fuzz_recordings(layout, tmp_path, capsys):
 @pytest.mark.parametrize("layout", ["7scenes", "replica", "scannet", "tum"])
 def test_fuzz_recordings_seeded_long_run(layout, tmp_path, capsys):
     _fuzz(layout, SLOW // 4, 3100, tmp_path, capsys)
+
+
+# ------------------------------------------------------------------------------ the readers themselves
+@pytest.mark.parametrize("ext, params", [(".png", []), (".jpg", []), (".jpg", [1, 90, 2, 1]), (".png", [16, 9])])
+def test_image_header_gives_the_size_opencv_decodes(ext, params):
+    """`fileio.image_header` reads the size from the header alone (PNG IHDR; JPEG baseline and
+    progressive SOF) as OpenCV decodes it, for odd sizes and channel counts."""
+    import cv2
+
+    from iesm_agent.fileio import image_header
+
+    rng = np.random.default_rng(5)
+    for h, w, c in [(1, 1, 1), (7, 300, 3), (480, 640, 3), (33, 17, 1)]:
+        image = rng.integers(0, 255, (h, w, c) if c > 1 else (h, w), dtype=np.uint8)
+        data = cv2.imencode(ext, image, params)[1].tobytes()
+        kind, width, height = image_header(data)
+        assert (kind, width, height) == ("png" if ext == ".png" else "jpeg", w, h)
+        assert cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_UNCHANGED).shape[:2] == (height, width)
+    for junk in (b"", b"\x89PNG\r\n\x1a\n", b"\xff\xd8\xff", b"BM\x00\x00", b"GIF89a", b"\xff\xd8" + b"\x00" * 40):
+        with pytest.raises(ValueError):
+            image_header(junk)
+
+
+def test_read_bytes_refuses_what_is_not_a_bounded_regular_file(tmp_path):
+    from iesm_agent.errors import IesmError
+    from iesm_agent.fileio import read_bytes, read_text
+
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    big = tmp_path / "big"
+    big.write_bytes(b"x" * 101)
+    lines = tmp_path / "lines"
+    lines.write_text("a\n" * 11)
+    for path, needle in [(fifo, "not a regular file"), (Path("/dev/zero"), "not a regular file"),
+                         (tmp_path, "not a regular file"), (tmp_path / "none", "missing"), (big, "more than the 100")]:
+        with pytest.raises(IesmError, match=needle):
+            read_bytes(path, 100)
+    with pytest.raises(IesmError, match="more than the 10 lines"):
+        read_text(lines, max_lines=10)
+    assert read_text(lines, max_lines=11) == "a\n" * 11
