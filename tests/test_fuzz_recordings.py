@@ -1,7 +1,8 @@
 """Bad recordings through `iesm segment` (issue 31: 5, 6, 7, 9; 2 for paths): every case exits 2
 with one `iesm: error:` line (or 0 when the input is valid, or a frame is skipped and counted),
 never a traceback, nothing written, nothing deleted. The named cases are the reproductions of the
-issue; the seeded mutations run a few dozen cases here and `FUZZ_CASES` more under `-m slow`.
+issue; the seeded mutations run 20 cases per layout here and `FUZZ_CASES` / 8 per layout (50 by
+default) under `-m slow`.
 Peak memory of the same cases in a fresh process: benchmarks/bench_bad_recordings.py."""
 
 from __future__ import annotations
@@ -361,7 +362,7 @@ def test_fuzz_recordings(layout, tmp_path, capsys):
 @pytest.mark.slow
 @pytest.mark.parametrize("layout", ["7scenes", "replica", "scannet", "tum"])
 def test_fuzz_recordings_seeded_long_run(layout, tmp_path, capsys):
-    _fuzz(layout, SLOW // 4, 3100, tmp_path, capsys)
+    _fuzz(layout, SLOW // 8, 3100, tmp_path, capsys)
 
 
 # ------------------------------------------------------------------------------ the readers themselves
