@@ -49,6 +49,18 @@ def utf8_text(text: str) -> str:
     return text.encode("utf-8", "surrogatepass").decode("utf-8", "replace")
 
 
+def recordable_path(path: str | Path, where: str | None = None) -> str:
+    """`str(path)` when it is valid UTF-8 text, as a path written into a JSON file and read back
+    must be; else an `IesmError` (a name with undecodable bytes: rename it)."""
+    text = str(path)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise IesmError("path is not valid UTF-8 text and is recorded in the run's files: rename it", text,
+                        where) from None
+    return text
+
+
 def _umask() -> int:
     """The process's file-creation mask: from /proc (Linux, no change to the process), else read
     by setting it and setting it back."""

@@ -133,3 +133,20 @@ def test_a_suite_that_is_a_fifo_or_a_device_is_refused_not_read(tmp_path):
     for path in (fifo, "/dev/zero"):
         with pytest.raises(IesmError, match="cannot read suite: not a regular file"):
             load_suites([path])
+
+
+def test_eval_refuses_a_suite_path_that_is_not_utf8_in_one_line(tmp_path, capsys):
+    """run.json records the suite's path: one that is not UTF-8 text cannot be written there (it
+    was a PydanticSerializationError traceback); now one line, before the run directory exists."""
+    import os
+    from pathlib import Path
+
+    from iesm_agent.cli import run
+
+    folder = Path(os.fsdecode(bytes(tmp_path) + b"/e_\xff"))
+    folder.mkdir()
+    suite = folder / "s.jsonl"
+    suite.write_text(_line(map="apartment") + "\n")
+    assert run(["eval", str(suite), "-m", "keyword", "--no-cache", "-o", str(tmp_path / "run")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not valid UTF-8" in err[0] and not (tmp_path / "run").exists()
