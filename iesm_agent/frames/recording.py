@@ -150,7 +150,8 @@ def frame_size(refs: list[FrameRef]) -> tuple[int, int]:
 
 
 def numbered(paths, pattern: str) -> list[tuple[int, Path]]:
-    """(number, path) of files whose name matches regex `pattern` with one number group, sorted."""
+    """(number, path) of files whose name matches regex `pattern` with one number group, sorted;
+    more than `MAX_FRAMES` of them is an `IesmError` (before any of their files is read)."""
     import re
 
     rx = re.compile(pattern)
@@ -159,4 +160,7 @@ def numbered(paths, pattern: str) -> list[tuple[int, Path]]:
         m = rx.fullmatch(p.name)
         if m:
             out.append((int(m.group(1)), p))
+            if len(out) > MAX_FRAMES:
+                raise IesmError(f"more than the {MAX_FRAMES:,} frames one recording may have (use a folder per "
+                                "part)", p.parent)
     return sorted(out)
