@@ -133,6 +133,8 @@ def check_pose(pose: np.ndarray, source: str) -> np.ndarray:
         raise BadFrame(f"pose translation of {np.abs(pose[:3, 3]).max():.3g} m is too far (a corrupt pose: "
                        f"at most +-{MAX_TRANSLATION_M:g} m)", source)
     r = pose[:3, :3]
+    if np.abs(r).max() > 1.0 + RIGID_TOL:  # a rotation's entries lie in [-1, 1] (and R^T R cannot overflow)
+        raise BadFrame(f"pose is not rigid (rotation entry {np.abs(r).max():.3g} outside [-1, 1])", source)
     err = float(np.abs(r.T @ r - np.eye(3)).max())
     if err > RIGID_TOL or np.linalg.det(r) <= 0:
         raise BadFrame(f"pose is not rigid (|R^T R - I| = {err:.3g}, det {np.linalg.det(r):.3g})", source)
