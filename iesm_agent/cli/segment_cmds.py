@@ -12,7 +12,7 @@ from typing import Optional
 import typer
 
 from ..errors import IesmError
-from ..fileio import utf8_text
+from ..fileio import read_text, utf8_text
 from .outputs import check_frame_output
 
 
@@ -23,8 +23,6 @@ MAX_NAMES = 10_000
 def _lines(path: Path | None) -> list[str] | None:
     if path is None:
         return None
-    from ..fileio import read_text
-
     names = [line.strip() for line in read_text(path, max_bytes=1024 * 1024, max_lines=MAX_NAMES).split("\n")
              if line.strip()]
     if not names:

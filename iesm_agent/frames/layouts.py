@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import IesmError
 from ..fileio import load_json
-from .checks import BadFrame
+from .checks import BadFrame, check_depth_scale
 from .ours import Intrinsics
 from .recording import (FrameRef, Recording, frame_size, intrinsics_from_matrix, make_intrinsics, numbered,
                         read_list, read_matrix)
@@ -129,10 +129,7 @@ def open_replica(directory: Path, depth_scale: float | None = None) -> Recording
     source = params_path or directory
     intr = make_intrinsics(cam.get("w"), cam.get("h"), cam.get("fx"), cam.get("fy"), cam.get("cx"), cam.get("cy"),
                            source)
-    scale = depth_scale if depth_scale is not None else cam.get("scale")
-    if not isinstance(scale, (int, float)) or isinstance(scale, bool) or not (math.isfinite(scale) and scale > 0):
-        raise IesmError(f"unusable camera parameters: scale must be a finite number > 0 (raw depth units per "
-                        f"metre), got {scale!r}", source)
+    scale = check_depth_scale(depth_scale if depth_scale is not None else cam.get("scale"), source, "scale")
     return Recording("replica", directory, intr, scale, refs, notes=notes, up=(0.0, 0.0, 1.0))
 
 
