@@ -274,10 +274,7 @@ def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError,
     import cv2
 
     data = read_bytes(path, MAX_IMAGE_BYTES, error=error)
-    try:
-        kind, width, height = image_header(data)
-    except (ValueError, struct.error) as exc:
-        raise error(f"not a readable image ({exc})", path) from None
+    kind, width, height = _checked_header(data, path, error)
     if width * height > max_pixels or not width or not height:
         raise error(f"{kind.upper()} declares {width} x {height} pixels (at most {max_pixels:,} are read)", path)
     image = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
@@ -288,12 +285,16 @@ def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError,
 
 def image_size(path: str | Path, *, error: ErrorT = IesmError) -> tuple[int, int]:
     """(width, height) of a PNG or JPEG file from its header alone."""
-    with_header = read_bytes(path, MAX_IMAGE_BYTES, error=error)
+    _kind, width, height = _checked_header(read_bytes(path, MAX_IMAGE_BYTES, error=error), path, error)
+    return width, height
+
+
+def _checked_header(data: bytes, path: str | Path, error: ErrorT) -> tuple[str, int, int]:
+    """`image_header(data)`, or an `error` naming `path`."""
     try:
-        _kind, width, height = image_header(with_header)
+        return image_header(data)
     except (ValueError, struct.error) as exc:
         raise error(f"not a readable image ({exc})", path) from None
-    return width, height
 
 
 def save_figure(fig, path: str | Path, dpi: int = 150, tight: bool = True) -> None:
