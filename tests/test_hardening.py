@@ -548,3 +548,16 @@ def test_sim_force_accepts_a_frame_directory_of_ours(tmp_path):
     assert _looks_like_frames(d)
     (d / "notes").mkdir()
     assert not _looks_like_frames(d)
+
+
+def test_an_allowed_host_may_name_its_own_port():
+    """`--allowed-host proxy.example:8443` (a name with the port a proxy sends) is compared as
+    given, and a plain name takes the port served."""
+    from mcp.server.transport_security import TransportSecurityMiddleware
+
+    from iesm_agent.server.app import transport_security
+
+    check = TransportSecurityMiddleware(transport_security("127.0.0.1", 8000, ("proxy.example:8443", "lab.example")))
+    assert check._validate_host("proxy.example:8443") and check._validate_host("lab.example:8000")
+    assert check._validate_host("lab.example") and check._validate_host("[::1]:8000")
+    assert not check._validate_host("proxy.example:8000") and not check._validate_host("lab.example:8443")

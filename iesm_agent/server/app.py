@@ -125,11 +125,20 @@ def transport_security(host: str, port: int, extra_hosts: tuple[str, ...] = ()) 
     (a local page on another port may call; `checked_host_headers` refuses a port that is not a
     number)."""
     names = list(LOOPBACK_HOSTS) + [h for h in (host, *extra_hosts) if h not in ("0.0.0.0", "::", "")]
-    names = list(dict.fromkeys(f"[{n}]" if ":" in n else n for n in names))
+    names = list(dict.fromkeys(f"[{n}]" if _is_ipv6(n) else n for n in names))
     return TransportSecuritySettings(
         enable_dns_rebinding_protection=True, allowed_hosts=names + [f"{n}:{port}" for n in names],
         allowed_origins=[f"{scheme}://{n}{any_port}" for n in names for scheme in ("http", "https")
                          for any_port in ("", ":*")])
+
+
+def _is_ipv6(name: str) -> bool:
+    import ipaddress
+
+    try:
+        return isinstance(ipaddress.ip_address(name), ipaddress.IPv6Address)
+    except ValueError:
+        return False
 
 
 def http_app(server: MCPServer, host: str, port: int, extra_hosts: tuple[str, ...] = ()):
