@@ -17,7 +17,7 @@ from urllib.parse import quote
 
 import pytest
 
-from fuzzing import check_cli
+from fuzzing import FAST, SLOW, Tally, check_cli, mutations
 from test_html_report import BROWSER, _hostile_map, chromium, needs_browser
 
 from iesm_agent.cli import run
@@ -216,7 +216,9 @@ def test_bad_out_is_one_line(clean_run, tmp_path, capsys):
                  ["report", str(clean_run), "-o", str(tmp_path / "missing" / "r.html")],
                  ["view", str(tmp_path.parent), "-o", str(tmp_path / "v.html")],
                  ["view", "apartment", "-o", str(tmp_path)],
-                 ["view", "apartment", "-o", str(tmp_path / "missing" / "v.html")]):
+                 ["view", "apartment", "-o", str(tmp_path / "missing" / "v.html")],
+                 ["import", str(_hostile_map(tmp_path / "m.json")), "-o", str(tmp_path)],
+                 ["import", str(tmp_path / "m.json"), "-o", str(tmp_path / "missing" / "m.iesm")]):
         check_cli(argv, capsys, may_pass=False)
 
 
@@ -259,3 +261,39 @@ def test_map_viewer_of_a_hostile_map_is_inert(tmp_path, capsys):
             dom = chromium(tmp_path, page.resolve().as_uri() + fragment)
             assert "data-pwned" not in next(a for t, a in Tags(dom).tags if t == "html"), fragment
             assert_inert(dom)
+
+
+def _fuzz_run_files(clean_run: Path, tmp_path: Path, capsys, n: int, seed: int) -> None:
+    """`n` seeded malformed variants (fuzzing.mutations: deep nesting, truncation, bad numbers,
+    wrong types, garbage bytes) of one of the run's files at a time: each report is refused in one
+    line or written inert."""
+    import random
+
+    rng = random.Random(seed)
+    docs = {"run.json": json.loads((clean_run / "run.json").read_text()),
+            "summary.json": json.loads((clean_run / "summary.json").read_text()),
+            "results.jsonl": _records(clean_run)[0]}
+    streams = {name: mutations(doc, random.Random(rng.random())) for name, doc in docs.items()}
+    for _ in range(n):
+        name = rng.choice(sorted(docs))
+        kind, text = next(streams[name])
+        run_dir = _copy_run(clean_run, tmp_path / "run")
+        if name == "results.jsonl":
+            rest = [json.dumps(r) for r in _records(clean_run)[1:]]
+            (run_dir / name).write_text("\n".join([text.replace("\n", " "), *rest]) + "\n", encoding="utf-8",
+                                        errors="surrogateescape")
+        else:
+            (run_dir / name).write_text(text, encoding="utf-8", errors="surrogateescape")
+        html = report_or_refusal(run_dir, capsys)
+        if html is not None:
+            assert_inert(html)
+        Tally.add(f"report {name}", f"{kind}:{'accepted' if html is not None else 'refused'}")
+
+
+def test_fuzz_run_files(clean_run, tmp_path, capsys):
+    _fuzz_run_files(clean_run, tmp_path, capsys, FAST, 3101)
+
+
+@pytest.mark.slow
+def test_fuzz_run_files_seeded_long_run(clean_run, tmp_path, capsys):
+    _fuzz_run_files(clean_run, tmp_path, capsys, SLOW // 2, 3102)
