@@ -23,7 +23,7 @@ def _depth_m(h: int, w: int, fy: float, cy: float) -> np.ndarray:
 def _colour(h: int, w: int, i: int) -> np.ndarray:
     rgb = np.full((h, w, 3), 90, np.uint8)
     rgb[: h // 2, : w // 3] = (200, 40, 40)
-    rgb[h // 2:, w // 2:] = (40, 160, 60 + 10 * i)
+    rgb[h // 2:, w // 2:] = (40, 160, (60 + 10 * i) % 256)
     return rgb
 
 

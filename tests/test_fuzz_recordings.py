@@ -403,3 +403,28 @@ def test_read_bytes_refuses_what_is_not_a_bounded_regular_file(tmp_path):
     with pytest.raises(IesmError, match="more than the 10 lines"):
         read_text(lines, max_lines=10)
     assert read_text(lines, max_lines=11) == "a\n" * 11
+
+
+@pytest.mark.slow
+def test_kill_9_mid_segment_leaves_nothing_the_next_run_keeps(tmp_path, capsys):
+    """Issue 31 (9) for real: `iesm segment` killed with SIGKILL while its staging folder exists;
+    the next run that writes the same -o removes the leftover (its process is gone)."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    src = WRITERS["7scenes"](tmp_path / "rec", n=60)
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "iesm_agent.cli", *segment(src, out)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env={**os.environ, "HF_HUB_OFFLINE": "1"})
+    deadline = time.monotonic() + 120
+    while not list(tmp_path.glob(".out.iesm-tmp.*/frames/*.png")) and time.monotonic() < deadline:
+        assert proc.poll() is None, "segment ended before it could be killed"
+        time.sleep(0.01)
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    left = list(tmp_path.glob(".out.iesm-tmp.*"))
+    assert left and f".{proc.pid}." in left[0].name  # the leftover names the dead process
+    assert run(segment(src, out)) == 0, capsys.readouterr().err
+    assert not list(tmp_path.glob(".out.iesm-tmp.*")) and json.loads((out / "scene.json").read_text())["n_frames"] == 60
