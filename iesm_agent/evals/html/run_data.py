@@ -49,6 +49,8 @@ class Run:
 
 
 class VariantView(BaseModel):
+    """One variant of `run.json` as the page reads it: its name."""
+
     model_config = ConfigDict(extra="ignore")
 
     name: str
