@@ -49,7 +49,7 @@ def _run(args: list[str], step: str) -> None:
 def _examples(suite: Path) -> list[str]:
     """The first query of each EXAMPLE_TYPES type in the suite (types it lacks are skipped)."""
     first: dict[str, str] = {}
-    for line in suite.read_text().splitlines():
+    for line in filter(str.strip, suite.read_text(encoding="utf-8").split("\n")):  # JSON Lines: "\n" only
         row = json.loads(line)
         first.setdefault(row["type"], row["query"])
     return [first[t] for t in EXAMPLE_TYPES if t in first]

@@ -1,7 +1,8 @@
 """Atomic file output and validated JSON input, shared by every stage.
 
 Every file the toolkit writes goes through `atomic_write`: the content is written to a temporary
-file beside the target (named `.NAME.iesm-tmp.PID.*`) and renamed into place, so a killed process
+file beside the target (named `.NAME.iesm-tmp.PID.*`, with the mode the umask gives an ordinary
+new file) and renamed into place, so a killed process
 never leaves a half-written output; the temporary files a killed process left behind are removed
 by the next write of that target (`clean_stale_temps`).
 
@@ -16,6 +17,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import struct
 import tempfile
 import zipfile
@@ -39,6 +41,45 @@ MAX_ARRAY_BYTES = 1024 * 1024 * 1024
 
 ModelT = TypeVar("ModelT", bound=BaseModel)
 ErrorT = type[IesmError]
+
+
+def utf8_text(text: str) -> str:
+    """`text` as valid UTF-8 text: a path's undecodable bytes (Python's surrogate escapes) and
+    other lone surrogates become U+FFFD, so the text can be written to JSON or a page."""
+    return text.encode("utf-8", "surrogatepass").decode("utf-8", "replace")
+
+
+def recordable_path(path: str | Path, where: str | None = None) -> str:
+    """`str(path)` when it is valid UTF-8 text, as a path written into a JSON file and read back
+    must be; else an `IesmError` (a name with undecodable bytes: rename it)."""
+    text = str(path)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise IesmError("path is not valid UTF-8 text and is recorded in the run's files: rename it", text,
+                        where) from None
+    return text
+
+
+def _umask() -> int:
+    """The process's file-creation mask: from /proc (Linux, no change to the process), else read
+    by setting it and setting it back."""
+    try:
+        with open("/proc/self/status", encoding="ascii", errors="replace") as status:
+            for line in status:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def _umask_mode(path: str | Path, mode: int) -> None:
+    """Give `path` (made by mkstemp / mkdtemp, mode 0600 / 0700) the mode an ordinary `open` /
+    `mkdir` would: `mode` (0666 for a file, 0777 for a directory) less the umask."""
+    os.chmod(path, mode & ~_umask())
 
 
 def _temp_prefix(path: Path) -> str:
@@ -86,17 +127,26 @@ def temp_dir(path: str | Path) -> Path:
     the same target are cleaned first); the caller renames it into place or removes it."""
     path = Path(path)
     clean_stale_temps(path)
-    return Path(tempfile.mkdtemp(prefix=_temp_prefix(path), dir=path.resolve().parent))
+    stage = Path(tempfile.mkdtemp(prefix=_temp_prefix(path), dir=path.resolve().parent))
+    _umask_mode(stage, 0o777)
+    return stage
 
 
 def atomic_write(path: str | Path, write: Callable[[Path], None]) -> None:
     """Call `write(tmp_path)` on a temporary file beside `path`, then rename it into place; the
-    temporary file is removed when `write` fails (and stale ones of a killed writer first)."""
+    temporary file is removed when `write` fails (and stale ones of a killed writer first). A
+    target that is a directory or whose folder does not exist is an `IesmError` before anything
+    is written."""
     path = Path(path)
+    if path.is_dir():
+        raise IesmError("is a directory: give a file name to write", path)
+    if not path.parent.is_dir():
+        raise IesmError("cannot write: the folder does not exist", path.parent)
     clean_stale_temps(path)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=_temp_prefix(path), suffix=path.suffix or ".tmp")
     os.close(fd)
     try:
+        _umask_mode(tmp, 0o666)  # the file a user shares is readable as the umask says, not 0600
         write(Path(tmp))
         os.replace(tmp, path)
     except BaseException:
@@ -114,9 +164,11 @@ def write_png(path: str | Path, image: np.ndarray) -> None:
     (OpenCV, fast compression)."""
     import cv2
 
-    def write(tmp: Path) -> None:
-        if not cv2.imwrite(str(tmp), image, [cv2.IMWRITE_PNG_COMPRESSION, 1]):
+    def write(tmp: Path) -> None:  # encoded in memory: OpenCV never sees the path (any bytes)
+        ok, encoded = cv2.imencode(".png", image, [cv2.IMWRITE_PNG_COMPRESSION, 1])
+        if not ok:
             raise IesmError("could not write image", path)
+        tmp.write_bytes(encoded.tobytes())
 
     atomic_write(path, write)
 
@@ -133,18 +185,116 @@ def pyplot(where: str | None = None):
     return plt
 
 
-def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError) -> np.ndarray:
-    """RGB uint8 (H, W, 3) when `color`, else the raw single-channel image (e.g. uint16 depth);
-    a missing or unreadable file is an `error` naming it."""
+#: largest image file read (bytes) and most pixels an image may declare in its header
+MAX_IMAGE_BYTES = 128 * 1024 * 1024
+MAX_IMAGE_PIXELS = 4096 * 4096
+#: largest text file read (bytes)
+MAX_TEXT_BYTES = 64 * 1024 * 1024
+
+
+def read_bytes(path: str | Path, max_bytes: int, *, error: ErrorT = IesmError, where: str | None = None) -> bytes:
+    """The bytes of the regular file `path`, refused (an `error` on one line) when it is missing,
+    not a regular file (a FIFO that would block, a device such as /dev/zero that never ends) or
+    larger than `max_bytes`, before more than `max_bytes` + 1 bytes are read. Any path Python
+    can name works, one that is not valid UTF-8 included (the OS gets `os.fsencode` bytes)."""
+    path = Path(path)
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        raise error("file is missing", path, where) from None
+    except (OSError, ValueError) as exc:  # ValueError: an embedded NUL
+        raise error(f"cannot read: {getattr(exc, 'strerror', None) or exc}", path, where) from None
+    if not stat.S_ISREG(info.st_mode):
+        raise error("not a regular file (a directory, FIFO or device is not read)", path, where)
+    if info.st_size > max_bytes:
+        raise error(f"file is {info.st_size:,} bytes, more than the {max_bytes:,} allowed", path, where)
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(max_bytes + 1)
+    except OSError as exc:
+        raise error(f"cannot read: {exc.strerror or exc}", path, where) from None
+    if len(data) > max_bytes:
+        raise error(f"file grew past the {max_bytes:,} bytes allowed while read", path, where)
+    return data
+
+
+def read_text(path: str | Path, *, max_bytes: int = MAX_TEXT_BYTES, max_lines: int | None = None,
+              error: ErrorT = IesmError, where: str | None = None) -> str:
+    """The UTF-8 text of the regular file `path` (`read_bytes`' checks), with at most `max_lines`
+    lines when given; anything else is an `error` naming the file, on one line."""
+    data = read_bytes(path, max_bytes, error=error, where=where)
+    if max_lines is not None and data.count(b"\n") > max_lines:
+        raise error(f"file has more than the {max_lines:,} lines allowed", path, where)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise error(f"not UTF-8 text ({exc.reason} at byte {exc.start})", path, where) from None
+
+
+def image_header(data: bytes) -> tuple[str, int, int]:
+    """(kind "png" / "jpeg", width, height) read from the header of encoded image `data`, without
+    decoding it; `ValueError` for anything else (or a header without a size)."""
+    if data[:8] == b"\x89PNG\r\n\x1a\n":
+        if len(data) < 24 or data[12:16] != b"IHDR":
+            raise ValueError("PNG without an IHDR header")
+        width, height = struct.unpack(">II", data[16:24])
+        return "png", width, height
+    if data[:2] == b"\xff\xd8":
+        at = 2
+        while at + 4 <= len(data):
+            if data[at] != 0xFF:
+                raise ValueError("damaged JPEG marker")
+            marker = data[at + 1]
+            if marker == 0xFF:  # fill byte
+                at += 1
+                continue
+            if marker in (0xD8, 0x01) or 0xD0 <= marker <= 0xD7:  # markers without a length
+                at += 2
+                continue
+            (length,) = struct.unpack(">H", data[at + 2:at + 4])
+            if 0xC0 <= marker <= 0xCF and marker not in (0xC4, 0xC8, 0xCC):  # start of frame
+                if at + 9 > len(data):
+                    break
+                height, width = struct.unpack(">HH", data[at + 5:at + 9])
+                return "jpeg", width, height
+            if marker == 0xD9 or length < 2:
+                break
+            at += 2 + length
+        raise ValueError("JPEG without a frame header")
+    raise ValueError("not a PNG or JPEG image")
+
+
+def read_image(path: str | Path, color: bool, *, error: ErrorT = IesmError,
+               max_pixels: int = MAX_IMAGE_PIXELS) -> np.ndarray:
+    """RGB uint8 (H, W, 3) when `color`, else the raw single-channel image (e.g. uint16 depth),
+    from a PNG or JPEG file. The file is read by Python (`read_bytes`: regular file, at most
+    `MAX_IMAGE_BYTES`; any path, one that is not UTF-8 included), its header checked (format, at
+    most `max_pixels` pixels) before OpenCV decodes it from memory. Any problem is an `error`
+    naming the file, on one line."""
     import cv2
 
-    path = Path(path)
-    if not path.is_file():
-        raise error("file is missing", path)
-    image = cv2.imread(str(path), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
-    if image is None:
-        raise error("not a readable image", path)
+    data = read_bytes(path, MAX_IMAGE_BYTES, error=error)
+    kind, width, height = _checked_header(data, path, error)
+    if width * height > max_pixels or not width or not height:
+        raise error(f"{kind.upper()} declares {width} x {height} pixels (at most {max_pixels:,} are read)", path)
+    image = cv2.imdecode(np.frombuffer(data, np.uint8), cv2.IMREAD_COLOR if color else cv2.IMREAD_UNCHANGED)
+    if image is None or image.shape[:2] not in ((height, width), (width, height)):  # EXIF may turn a JPEG
+        raise error("not a readable image (damaged data)", path)
     return cv2.cvtColor(image, cv2.COLOR_BGR2RGB) if color else image
+
+
+def image_size(path: str | Path, *, error: ErrorT = IesmError) -> tuple[int, int]:
+    """(width, height) of a PNG or JPEG file from its header alone."""
+    _kind, width, height = _checked_header(read_bytes(path, MAX_IMAGE_BYTES, error=error), path, error)
+    return width, height
+
+
+def _checked_header(data: bytes, path: str | Path, error: ErrorT) -> tuple[str, int, int]:
+    """`image_header(data)`, or an `error` naming `path`."""
+    try:
+        return image_header(data)
+    except (ValueError, struct.error) as exc:
+        raise error(f"not a readable image ({exc})", path) from None
 
 
 def save_figure(fig, path: str | Path, dpi: int = 150, tight: bool = True) -> None:
@@ -186,16 +336,7 @@ def load_json(data: str | bytes | Path, source: str | Path | None = None, where:
     path) and `where`, on one line."""
     if isinstance(data, Path):
         source = data if source is None else source
-        try:
-            size = data.stat().st_size
-            if size > max_bytes:
-                raise error(f"file is {size:,} bytes, more than the {max_bytes:,} a JSON input may have",
-                            source, where)
-            data = data.read_bytes()
-        except FileNotFoundError:
-            raise error("file is missing", source, where) from None
-        except OSError as exc:
-            raise error(f"cannot read: {exc.strerror or exc}", source, where) from None
+        data = read_bytes(data, max_bytes, error=error, where=where)
     raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else bytes(data)
     if len(raw) > max_bytes:
         raise error(f"JSON of {len(raw):,} bytes is more than the {max_bytes:,} allowed", source, where)

@@ -111,3 +111,42 @@ def test_a_broken_map_is_an_error_of_the_lines_that_use_it(tmp_path, tiny_map):
     suite = load_suites([path], skip_invalid=True)
     assert [e.query.id for e in suite.entries] == ["q1"]
     assert [e.where for e in suite.errors] == ["line 2", "line 3"]
+
+
+@pytest.mark.parametrize("char", ["\u2028", "\u2029", "\u0085", "\x0b", "\x0c", "\x1c"])
+def test_a_query_holding_a_unicode_line_separator_is_one_line(tmp_path, tiny_map, char):
+    """Issue 31 (10): JSON Lines end at "\\n" only; `splitlines()` cut a query holding U+2028 or
+    U+0085 (valid, unescaped, in JSON text) in two and refused the line."""
+    path = tmp_path / "suite.jsonl"
+    path.write_text(json.dumps({"id": "q1", "map": "maps/tiny.iesm", "query": f"the chair{char}by the door",
+                                "type": "o", "target": 1, "accept": [1]}, ensure_ascii=False) + "\r\n",
+                    encoding="utf-8", newline="")
+    suite = load_suites([path])
+    assert [e.query.query for e in suite.entries] == [f"the chair{char}by the door"]
+
+
+def test_a_suite_that_is_a_fifo_or_a_device_is_refused_not_read(tmp_path):
+    import os
+
+    fifo = tmp_path / "fifo.jsonl"
+    os.mkfifo(fifo)
+    for path in (fifo, "/dev/zero"):
+        with pytest.raises(IesmError, match="cannot read suite: not a regular file"):
+            load_suites([path])
+
+
+def test_eval_refuses_a_suite_path_that_is_not_utf8_in_one_line(tmp_path, capsys):
+    """run.json records the suite's path: one that is not UTF-8 text cannot be written there (it
+    was a PydanticSerializationError traceback); now one line, before the run directory exists."""
+    import os
+    from pathlib import Path
+
+    from iesm_agent.cli import run
+
+    folder = Path(os.fsdecode(bytes(tmp_path) + b"/e_\xff"))
+    folder.mkdir()
+    suite = folder / "s.jsonl"
+    suite.write_text(_line(map="apartment") + "\n")
+    assert run(["eval", str(suite), "-m", "keyword", "--no-cache", "-o", str(tmp_path / "run")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not valid UTF-8" in err[0] and not (tmp_path / "run").exists()

@@ -467,22 +467,68 @@ def test_exposure_rule():
         check_exposure("::", None, False)
 
 
-def test_host_is_compared_case_insensitively():
-    from mcp.server.transport_security import TransportSecurityMiddleware
+def _headers_seen(host: bytes, origin: bytes | None = None) -> tuple[int | None, dict]:
+    """(status the wrapper answered itself or None, headers it passed on) for one request."""
+    from iesm_agent.server.app import checked_host_headers
 
-    from iesm_agent.server.app import lowercase_host_headers, transport_security
-
-    seen = {}
+    seen, sent = {}, []
 
     async def app(scope, receive, send):
         seen.update(dict(scope["headers"]))
 
-    scope = {"type": "http", "headers": [(b"host", b"LOCALHOST:8000"), (b"origin", b"HTTP://LocalHost:8000"),
-                                         (b"x-other", b"KeepCase")]}
-    asyncio.run(lowercase_host_headers(app)(scope, None, None))
+    async def send(message):
+        sent.append(message)
+
+    headers = [(b"host", host), (b"x-other", b"KeepCase")] + ([(b"origin", origin)] if origin else [])
+    asyncio.run(checked_host_headers(app)({"type": "http", "headers": headers}, None, send))
+    return (sent[0]["status"] if sent else None), seen
+
+
+def test_host_is_compared_case_insensitively():
+    from mcp.server.transport_security import TransportSecurityMiddleware
+
+    from iesm_agent.server.app import transport_security
+
+    status, seen = _headers_seen(b"LOCALHOST:8000", b"HTTP://LocalHost:8000")
+    assert status is None
     assert seen == {b"host": b"localhost:8000", b"origin": b"http://localhost:8000", b"x-other": b"KeepCase"}
-    check = TransportSecurityMiddleware(transport_security("127.0.0.1"))
+    check = TransportSecurityMiddleware(transport_security("127.0.0.1", 8000))
     assert check._validate_host(seen[b"host"].decode()) and check._validate_origin(seen[b"origin"].decode())
+
+
+@pytest.mark.parametrize("host, ok", [
+    ("localhost:8000", True), ("127.0.0.1:8000", True), ("[::1]:8000", True), ("localhost", True),
+    ("localhost:1@evil.example", False), ("127.0.0.1:8000.evil.example", False), ("localhost:8001", False),
+    ("localhost:", False), ("localhost:8000:1", False), ("evil.example:8000", False), ("localhost.evil:8000", False),
+])
+def test_host_is_compared_as_host_and_port_exactly(host, ok):
+    """Issue 31 (11): anything after `localhost:` passed; now the name and the port served."""
+    from mcp.server.transport_security import TransportSecurityMiddleware
+
+    from iesm_agent.server.app import transport_security
+
+    assert TransportSecurityMiddleware(transport_security("127.0.0.1", 8000))._validate_host(host) is ok
+
+
+@pytest.mark.parametrize("origin, ok", [
+    ("http://localhost", True), ("https://127.0.0.1", True), ("http://localhost:8000", True),
+    ("http://localhost:3000", True), ("http://[::1]:8000", True),
+    ("http://localhost:1@evil.example", False), ("http://localhost:8000.evil.example", False),
+    ("http://evil.example", False), ("http://localhost.evil.example", False), ("ftp://localhost", False),
+])
+def test_origin_is_a_loopback_name_with_or_without_a_numeric_port(origin, ok):
+    """Issue 31 (11): `Origin: http://localhost` without a port was refused; a port that is not a
+    number is refused by the wrapper before the SDK's `host:*` pattern sees it."""
+    from mcp.server.transport_security import TransportSecurityMiddleware
+
+    from iesm_agent.server.app import transport_security
+
+    status, seen = _headers_seen(b"localhost:8000", origin.encode())
+    passed = status is None and TransportSecurityMiddleware(
+        transport_security("127.0.0.1", 8000))._validate_origin(seen[b"origin"].decode())
+    assert passed is ok
+    if not ok and status is not None:
+        assert status == 403
 
 
 # ---------------------------------------------------------------------- sim --force
@@ -496,9 +542,22 @@ def test_sim_force_only_replaces_a_frame_directory(tmp_path, capsys):
 
 
 def test_sim_force_accepts_a_frame_directory_of_ours(tmp_path):
-    from iesm_agent.cli.sim_cmds import _looks_like_frames
+    from iesm_agent.cli.outputs import looks_like_frames as _looks_like_frames
 
     d = write_tiny_frames(tmp_path / "f")
     assert _looks_like_frames(d)
     (d / "notes").mkdir()
     assert not _looks_like_frames(d)
+
+
+def test_an_allowed_host_may_name_its_own_port():
+    """`--allowed-host proxy.example:8443` (a name with the port a proxy sends) is compared as
+    given, and a plain name takes the port served."""
+    from mcp.server.transport_security import TransportSecurityMiddleware
+
+    from iesm_agent.server.app import transport_security
+
+    check = TransportSecurityMiddleware(transport_security("127.0.0.1", 8000, ("proxy.example:8443", "lab.example")))
+    assert check._validate_host("proxy.example:8443") and check._validate_host("lab.example:8000")
+    assert check._validate_host("lab.example") and check._validate_host("[::1]:8000")
+    assert not check._validate_host("proxy.example:8000") and not check._validate_host("lab.example:8443")

@@ -36,7 +36,7 @@ def _no_embeddings(monkeypatch):
 async def serving(service: MapService, token: str | None):
     """The HTTP server on a free 127.0.0.1 port for the duration of the block; yields its /mcp URL."""
     sock = bind("127.0.0.1", 0)
-    server = uvicorn_server(http_app(build_server(service, token), "127.0.0.1"))
+    server = uvicorn_server(http_app(build_server(service, token), "127.0.0.1", sock.getsockname()[1]))
     task = asyncio.create_task(server.serve(sockets=[sock]))
     try:
         while not server.started:

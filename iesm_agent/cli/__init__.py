@@ -81,6 +81,9 @@ def usage_line(exc: Exception) -> str:
 def run(argv: list[str] | None = None) -> int:
     """Run one `iesm` command line in this process and return its exit status: user errors
     become one line on stderr and status 2."""
+    for stream in (sys.stdout, sys.stderr):  # a path that is not UTF-8 prints with \x escapes
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
     try:
         status = app(args=argv, standalone_mode=False, prog_name="iesm")  # a command's typer.Exit code, or None
     except IesmError as exc:

@@ -12,15 +12,19 @@ from typing import Optional
 import typer
 
 from ..errors import IesmError
+from ..fileio import read_text, utf8_text
+from .outputs import check_frame_output
+
+
+#: most names a --categories or --rooms file may list
+MAX_NAMES = 10_000
 
 
 def _lines(path: Path | None) -> list[str] | None:
     if path is None:
         return None
-    try:
-        names = [line.strip() for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
-    except (OSError, UnicodeDecodeError) as exc:
-        raise IesmError(f"cannot read ({exc})", path) from None
+    names = [line.strip() for line in read_text(path, max_bytes=1024 * 1024, max_lines=MAX_NAMES).split("\n")
+             if line.strip()]
     if not names:
         raise IesmError("no names in the file (one per line)", path)
     return names
@@ -59,9 +63,10 @@ def register(app: typer.Typer) -> None:
         device: Optional[str] = typer.Option(None, "--device", help="cpu or cuda (default: cuda when available)"),
         points_per_side: int = typer.Option(32, "--points-per-side", min=1, help="SAM point grid"),
         random_weights: bool = typer.Option(False, "--random-weights", help="sam-clip without checkpoints (tests only)"),
+        force: bool = typer.Option(False, "--force", help="replace a non-empty -o that is a frame directory of ours"),
     ) -> None:
         """Run perception once: masks + embeddings in our frame layout, from any supported recording."""
-        from ..frames import FrameSet, detect_layout, open_recording
+        from ..frames import FrameSet, matching_layouts, open_recording
         from ..frames.convert import import_recording, staged_directory
         from ..segment import SEGMENTERS, SegmenterSpec
         from ..segment.run import segment_frame_set
@@ -76,7 +81,17 @@ def register(app: typer.Typer) -> None:
                              points_per_side=points_per_side, random_weights=random_weights,
                              **({"pred_iou_thresh": 0.0, "stability_score_thresh": 0.0} if random_weights else {}))
         categories, rooms = _lines(categories_file), _lines(rooms_file)
-        kind = layout or detect_layout(source)
+        found = matching_layouts(source)
+        if not found and layout is None:
+            from ..frames.detect import EXPECTED
+
+            raise IesmError(f"no frames found ({EXPECTED})", source)
+        kind = layout or found[0]
+        if layout is None and len(found) > 1:
+            typer.echo(f"iesm: warning: {source} looks like {' and '.join(found)}: read as {kind} "
+                       f"(--layout chooses)", err=True)
+        if kind != "ours" and output is not None:
+            check_frame_output(output, force, "segment", source)
         backend = "ray" if use_ray else "serial"
         timings: dict[str, float] = {}
 
@@ -110,7 +125,8 @@ def register(app: typer.Typer) -> None:
                 t0 = time.perf_counter()
                 with progress_bar("read") as progress:
                     task = progress.add_task(f"read {kind}", total=len(recording))
-                    imported = import_recording(recording, stage, scene_id=output.name, embedding_space="none",
+                    imported = import_recording(recording, stage, scene_id=utf8_text(output.name),
+                                                embedding_space="none",
                                                 categories=[], skip_bad=skip_bad, align=not no_align,
                                                 on_frame=lambda _f: progress.advance(task))
                 timings["read + check + align + write"] = (time.perf_counter() - t0) / imported.n_frames

@@ -20,7 +20,8 @@ def serve_command(
     providers: list[str] = typer.Option(["offline"], "--provider", "-p",
                                         help="Model spec callers may use (repeatable; the first is the default)."),
     allowed_hosts: list[str] = typer.Option([], "--allowed-host",
-                                            help="Extra Host header name accepted over HTTP (repeatable)."),
+                                            help="Extra Host header accepted over HTTP: NAME (alone or with the port served) or "
+                                                 "NAME:PORT as sent (repeatable)."),
     insecure_no_token: bool = typer.Option(False, "--insecure-no-token",
                                            help="Serve a non-loopback address without IESM_TOKEN (anyone who "
                                                 "reaches it may call the tools)."),

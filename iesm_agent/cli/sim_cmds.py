@@ -11,40 +11,8 @@ import typer
 
 from ..errors import IesmError
 from ..fileio import temp_dir
+from .outputs import check_frame_output
 from .progress import progress_bar
-
-
-#: directories a frame directory of ours holds; besides them only files of these kinds
-_FRAME_DIR_DIRS = {"frames", "gt"}
-_FRAME_DIR_FILES = {".json", ".npz", ".iesm", ".png", ".txt", ".md"}
-
-
-def _check_out(out: Path, force: bool) -> None:
-    if not out.parent.resolve().is_dir():
-        raise IesmError("output's parent directory does not exist", out)
-    if out.exists():
-        if not out.is_dir():
-            raise IesmError("exists and is not a directory", out)
-        if any(out.iterdir()) and not force:
-            raise IesmError("directory is not empty (use --force to replace it)", out)
-        if force and any(out.iterdir()) and not _looks_like_frames(out):
-            raise IesmError("--force replaces only a frame directory made by `iesm sim` (scene.json of format "
-                            "iesm-frames, frames/, no other directories than gt/): not deleting it", out)
-
-
-def _looks_like_frames(out: Path) -> bool:
-    """Whether `out` is a frame directory of ours: its scene.json says so and it holds nothing
-    a frame directory does not."""
-    from ..fileio import load_json
-
-    try:
-        scene = load_json(out / "scene.json", max_bytes=1024 * 1024)
-    except IesmError:
-        return False
-    ours = all(p.name in _FRAME_DIR_DIRS if p.is_dir() else p.suffix.lower() in _FRAME_DIR_FILES
-               for p in out.iterdir())
-    return (ours and isinstance(scene, dict) and scene.get("format") == "iesm-frames"
-            and (out / "frames").is_dir() and not (out / "frames").is_symlink())
 
 
 def _load_faults(path: Optional[Path], seed: int):
@@ -87,7 +55,7 @@ def register(app: typer.Typer) -> None:
         if size not in PROGRAMS:
             raise IesmError(f"unknown --size {size!r} (choose from {', '.join(PROGRAMS)})")
         profile = get_profile(realism)
-        _check_out(out, force)
+        check_frame_output(out, force, "sim")
         config = _load_faults(faults, seed)
         world = generate_scene(seed, size, open_plan)
         tmp = temp_dir(out)  # named as our temporary files: a killed run's is removed by the next

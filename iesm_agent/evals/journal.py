@@ -15,6 +15,9 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 from ..errors import IesmError
 from ..retrieval.result import CallTrace
 
+#: a run directory's journal and its configuration (file names)
+RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
+
 
 class KeptCall(CallTrace):
     """A model call as journaled: the trace, plus the rendered prompt messages
@@ -74,9 +77,14 @@ class ResultRecord(BaseModel):
         return self.id, self.variant
 
 
+def _no_constant(name: str):
+    raise ValueError(f"{name} is not a number a record may hold")
+
+
 def read_journal(path: Path) -> list[ResultRecord]:
     """All complete (newline-terminated) records of `path` (missing file -> []). A damaged
-    complete line is an error naming the line."""
+    complete line (not JSON, NaN / Infinity, nested too deep, a wrong field) is an error naming
+    the line."""
     if not path.exists():
         return []
     lines = path.read_text(encoding="utf-8", errors="replace").split("\n")[:-1]  # the last piece has no newline
@@ -85,9 +93,12 @@ def read_journal(path: Path) -> list[ResultRecord]:
         if not line.strip():
             continue
         try:
-            records.append(ResultRecord.model_validate_json(line))
+            records.append(ResultRecord.model_validate(json.loads(line, parse_constant=_no_constant)))
         except ValidationError as exc:
-            raise IesmError(f"damaged journal record: {exc.errors()[0]['msg']}", path, f"line {number}") from exc
+            raise IesmError(f"damaged journal record: {exc.errors()[0]['msg']}", path, f"line {number}") from None
+        except (ValueError, RecursionError) as exc:  # not JSON (JSONDecodeError), NaN, too deep
+            raise IesmError(f"damaged journal record: {' '.join(str(exc).split())[:200]}", path,
+                            f"line {number}") from None
     return records
 
 

@@ -32,6 +32,7 @@ import json
 import numpy as np
 
 from ..config import MappingConfig
+from ..fileio import read_image
 from ..frames import FrameSet
 from ..store.model import GridSpec, InstanceGrid, SceneMap
 from ..mapping.build import category_vectors
@@ -132,8 +133,6 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, ex
     """(flat cell in `grid`, gt id, top m) per observed (cell, id), and pixel counts per id, from
     the instance images, depth and poses of `frames`; None when no frame has an instance image.
     Depth comes from `exact_depth`/NNNNNN.png (millimetres) where that file exists."""
-    import cv2
-
     k = frames.intrinsics
     parts, counts = [], np.zeros(1, np.int64)
     for i in range(len(frames)):
@@ -144,7 +143,7 @@ def observed_footprints(frames: FrameSet, grid: GridSpec, cfg: MappingConfig, ex
         depth = frame.depth
         exact = exact_depth / f"{i:06d}.png" if exact_depth is not None else None
         if exact is not None and exact.is_file():
-            depth = cv2.imread(str(exact), cv2.IMREAD_UNCHANGED).astype(np.float32) / 1000.0
+            depth = read_image(exact, color=False).astype(np.float32) / 1000.0
         pixels = np.flatnonzero((inst > 0) & (depth.ravel() > 0) & (depth.ravel() <= cfg.max_depth))
         keys, z = pixel_cells(depth, pixels, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size)
         flat = keys_in_grid(keys, cfg.cell_size, grid)

@@ -6,29 +6,12 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
-from typing import Sequence
 
 from ..errors import IesmError
 from ..fileio import pyplot, save_figure, write_text
-from .journal import ResultRecord
-from .metrics import summarize
-from .query_types import UNTYPED, ordered_types, type_title
-from .significance import compare_to_first
+from .query_types import ordered_types, type_title
 
 PLOT = "osr_by_type.png"
-
-
-def build_summary(records: Sequence[ResultRecord], variants: Sequence[str], extra: dict | None = None) -> dict:
-    """Metrics per variant plus paired McNemar tests of the first variant against the others."""
-    summary = summarize(records, variants)
-    types = {r.id: r.type or UNTYPED for r in records}
-    correct: dict[str, dict[str, bool]] = {v: {} for v in summary["methods"]}
-    for r in records:
-        correct[r.variant][r.id] = r.correct
-    summary["types"] = ordered_types(set(types.values()) - {UNTYPED})
-    summary["significance"] = compare_to_first(correct, types, list(summary["methods"]))
-    summary.update(extra or {})
-    return summary
 
 
 def _pct(value) -> str:
@@ -136,7 +119,7 @@ def plot_osr(summary: dict, path: Path) -> bool:
 
 def write_outputs(run_dir: Path, summary: dict) -> None:
     """summary.json, report.md, the plot and report.html (from the files of `run_dir`) into `run_dir`."""
-    from .html import REPORT, write_report  # the page reads the run back: html imports this module
+    from .html import REPORT, write_report  # the page reads the run back from its files
 
     plotted = bool(summary["types"]) and plot_osr(summary, run_dir / PLOT)
     write_text(run_dir / "summary.json", json.dumps(summary, indent=2) + "\n")

@@ -19,15 +19,15 @@ from typing import Callable, Optional
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ..errors import IesmError
-from ..fileio import load_json, validation_message
+from ..fileio import MAX_TEXT_BYTES, load_json, read_bytes, recordable_path, validation_message
 from ..providers.base import Model
 from ..retrieval.methods import is_method_name
-from .journal import ResultRecord, append_record, read_journal, repair_journal
+from .journal import RESULTS, RUN_CONFIG, ResultRecord, append_record, read_journal, repair_journal
 from .prompt_log import PromptRecorder, journaled_calls, template_hashes
-from .report import build_summary, write_outputs
+from .report import write_outputs
+from .summary import build_summary
 from .suite import MapRegistry, Suite, SuiteEntry, load_suites
 
-RESULTS, RUN_CONFIG = "results.jsonl", "run.json"
 
 
 class Variant(BaseModel):
@@ -101,13 +101,18 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
     paths = [Path(p).resolve() for p in suite_paths]
     digest = hashlib.sha256()
     for path in paths:
-        try:
-            digest.update(path.read_bytes())
-        except OSError as exc:
-            raise IesmError(f"cannot read suite: {exc}", path) from exc
+        recordable_path(path)
+        try:  # a regular file of bounded size (a FIFO or /dev/zero is refused, not read)
+            digest.update(read_bytes(path, MAX_TEXT_BYTES))
+        except IesmError as exc:
+            raise IesmError(f"cannot read suite: {exc.message}", path) from None
+    for variant in variants:
+        if variant.prompts_dir is not None:
+            recordable_path(variant.prompts_dir, "--prompts")
     return RunConfig(suites=[str(p) for p in paths], suites_sha256=digest.hexdigest(), variants=variants,
                      provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
-                     experts_dirs=[str(Path(d).resolve()) for d in experts_dirs], gt=[_resolve_gt(g) for g in gt],
+                     experts_dirs=[recordable_path(Path(d).resolve(), "--experts-dir") for d in experts_dirs],
+                     gt=[recordable_path(_resolve_gt(g), "--gt") for g in gt],
                      prompt_hashes={v.name: template_hashes(v.prompts_dir) for v in variants})
 
 

@@ -15,7 +15,7 @@ from typing import Annotated, Iterable, Optional
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from ..errors import IesmError
-from ..fileio import load_json, write_text
+from ..fileio import load_json, read_text, write_text
 from ..store.model import Id, Metres, SceneMap
 from ..store.refs import open_map, resolve_map_path
 
@@ -112,11 +112,11 @@ def load_suites(paths: Iterable[str | Path], *, skip_invalid: bool = False,
     seen: dict[str, str] = {}
     paths = [Path(p) for p in paths]
     for path in paths:
-        try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise IesmError(f"cannot read suite: {exc}", path) from exc
-        for number, line in enumerate(text.splitlines(), start=1):
+        try:  # a regular UTF-8 file of bounded size (a FIFO or /dev/zero is refused, not read)
+            text = read_text(path)
+        except IesmError as exc:
+            raise IesmError(f"cannot read suite: {exc.message}", path) from None
+        for number, line in enumerate(text.split("\n"), start=1):  # JSON Lines: U+2028 / U+0085 are text
             if not line.strip():
                 continue
             try:

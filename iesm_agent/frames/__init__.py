@@ -7,9 +7,9 @@ from .ours import (DEPTH_SCALE, FORMAT, MAX_DEPTH_M, VERSION, Frame, FrameSet, I
                    Segmentation, Segmenter, encode_segmentation, frame_stem, write_frame, write_frame_features,
                    write_frame_set, write_segmentation, write_vocabulary)
 from .recording import FrameRef, Recording, SkipLog
-from .detect import LAYOUTS, detect_layout, open_recording
+from .detect import LAYOUTS, detect_layout, matching_layouts, open_recording
 
 __all__ = ["DEPTH_SCALE", "FORMAT", "MAX_DEPTH_M", "VERSION", "Frame", "FrameSet", "Intrinsics", "SceneMeta",
            "Segmentation", "Segmenter", "encode_segmentation", "frame_stem", "write_frame", "write_frame_features",
            "write_frame_set", "write_segmentation", "write_vocabulary", "FrameRef", "Recording", "SkipLog",
-           "LAYOUTS", "detect_layout", "open_recording"]
+           "LAYOUTS", "detect_layout", "matching_layouts", "open_recording"]

@@ -8,15 +8,20 @@ whole recording). Poses: finite, last row 0 0 0 1, a rotation block within `RIGI
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import IesmError
+from .ours import MAX_TRANSLATION_M, Intrinsics
 
 RIGID_TOL = 0.02          # max |R^T R - I| entry of a usable pose
 UNIT_RANGE_M = (0.2, 15.0)  # a recording's median depth reading must lie here (indoor sensors)
+#: focal lengths (pixels) a camera may have, as multiples of the image's longer side: a
+#: 170-degree fisheye is about 0.1, a strong telephoto 20
+FOCAL_RANGE = (0.05, 100.0)
 
 
 class BadFrame(IesmError):
@@ -72,6 +77,34 @@ def clean_depth(raw: np.ndarray, scale: float, max_depth: float, path: Path, log
     return depth
 
 
+def check_depth_scale(scale: float, source, where: str | None = None) -> float:
+    """`scale` (raw depth units per metre) when it is a finite number > 0, else an `IesmError`
+    (NaN, infinity, zero or a negative scale would lose every reading)."""
+    try:
+        value = float(scale)
+    except (TypeError, ValueError, OverflowError):
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise IesmError(f"depth scale must be a finite number > 0 (raw units per metre), got {scale!r}", source, where)
+    return value
+
+
+def check_intrinsics(k: Intrinsics, source) -> Intrinsics:
+    """`k` when a camera could have it: focal lengths within `FOCAL_RANGE` times the image's
+    longer side and the principal point within one image size of the image; else an `IesmError`."""
+    side = max(k.width, k.height)
+    lo, hi = FOCAL_RANGE[0] * side, FOCAL_RANGE[1] * side
+    for name, f in (("fx", k.fx), ("fy", k.fy)):
+        if not lo <= f <= hi:
+            raise IesmError(f"camera intrinsics: {name} = {f:g} px is not a focal length for a {k.width} x "
+                            f"{k.height} image (expected {lo:g}-{hi:g} px)", source)
+    for name, c, size in (("cx", k.cx, k.width), ("cy", k.cy, k.height)):
+        if not -size <= c <= 2 * size:
+            raise IesmError(f"camera intrinsics: {name} = {c:g} px lies far outside the {k.width} x {k.height} "
+                            f"image", source)
+    return k
+
+
 def check_depth_unit(depth_m: np.ndarray, scale: float, path: Path, layout: str) -> None:
     """Refuse a recording whose median reading (m) is not a plausible indoor distance."""
     valid = depth_m[depth_m > 0]
@@ -96,7 +129,12 @@ def check_pose(pose: np.ndarray, source: str) -> np.ndarray:
         raise BadFrame("pose has NaN entries", source)
     if not np.allclose(pose[3], [0, 0, 0, 1], atol=1e-6):
         raise BadFrame(f"pose's last row must be 0 0 0 1, got {pose[3].tolist()}", source)
+    if np.abs(pose[:3, 3]).max() > MAX_TRANSLATION_M:
+        raise BadFrame(f"pose translation of {np.abs(pose[:3, 3]).max():.3g} m is too far (a corrupt pose: "
+                       f"at most +-{MAX_TRANSLATION_M:g} m)", source)
     r = pose[:3, :3]
+    if np.abs(r).max() > 1.0 + RIGID_TOL:  # a rotation's entries lie in [-1, 1] (and R^T R cannot overflow)
+        raise BadFrame(f"pose is not rigid (rotation entry {np.abs(r).max():.3g} outside [-1, 1])", source)
     err = float(np.abs(r.T @ r - np.eye(3)).max())
     if err > RIGID_TOL or np.linalg.det(r) <= 0:
         raise BadFrame(f"pose is not rigid (|R^T R - I| = {err:.3g}, det {np.linalg.det(r):.3g})", source)
@@ -110,5 +148,6 @@ def pose_reason(exc: BadFrame) -> str:
     """The short reason of a pose error for the skip summary."""
     msg = exc.message
     return ("invalid pose (-inf: tracking lost)" if "infinite" in msg else
-            "invalid pose (NaN)" if "NaN" in msg else "invalid pose (not rigid)" if "rigid" in msg else
+            "invalid pose (NaN)" if "NaN" in msg else "invalid pose (too far)" if "too far" in msg else
+            "invalid pose (not rigid)" if "rigid" in msg else "no depth reading" if "no reading" in msg else
             "missing file" if "missing" in msg else msg.split(" (")[0])

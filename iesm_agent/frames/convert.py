@@ -5,8 +5,8 @@ leaves nothing behind."""
 
 from __future__ import annotations
 
+import os
 import shutil
-import tempfile
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -18,7 +18,7 @@ from ..errors import IesmError
 from .checks import BadFrame, SkipLog, check_depth_unit, pose_reason
 from .gravity import Alignment, estimate_alignment, identity
 from .ours import Frame, SceneMeta, write_frame, write_frame_set
-from ..fileio import read_image
+from ..fileio import read_image, temp_dir, utf8_text
 from .recording import Recording
 
 ALIGN_SAMPLE = 30  # frames used to find the floor
@@ -39,17 +39,22 @@ class ImportReport:
 
 @contextmanager
 def staged_directory(target: Path) -> Iterator[Path]:
-    """A fresh directory beside `target` that replaces `target` when the block succeeds and is
-    removed when it fails."""
+    """A fresh directory beside `target` (`.NAME.iesm-tmp.PID.*`, so that a later run removes it
+    when this process was killed) that replaces `target` when the block succeeds and is removed
+    when it fails."""
     target = Path(target)
     if not target.parent.resolve().is_dir():
         raise IesmError("output directory's parent does not exist", target)
-    stage = Path(tempfile.mkdtemp(dir=target.parent, prefix=f".{target.name}.iesm-tmp."))
+    stage = temp_dir(target)
     try:
         yield stage
-        if target.exists():
-            shutil.rmtree(target)
-        stage.rename(target)
+        if target.exists():  # the caller checked it may be replaced (cli.outputs.check_frame_output)
+            old = stage.with_name(stage.name + ".old")
+            os.replace(target, old)
+            os.replace(stage, target)
+            shutil.rmtree(old)
+        else:
+            os.replace(stage, target)
     except BaseException:
         shutil.rmtree(stage, ignore_errors=True)
         raise
@@ -111,6 +116,7 @@ def import_recording(rec: Recording, out_dir: Path, *, scene_id: str, embedding_
     source = {"layout": rec.layout, "path": str(rec.directory), "notes": "; ".join(rec.notes),
               "alignment": alignment.description, "alignment_method": alignment.method,
               "transform": " ".join(f"{v:.9g}" for v in alignment.transform.ravel()), **log.as_meta()}
+    source = {k: utf8_text(v) for k, v in source.items()}  # a path need not be UTF-8
     write_frame_set(out_dir, SceneMeta(scene_id=scene_id, n_frames=n, embedding_space=embedding_space,
                                        categories=categories, source=source), rec.intrinsics)
     return ImportReport(n, log, alignment, list(rec.notes))

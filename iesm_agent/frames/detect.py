@@ -6,6 +6,7 @@ from pathlib import Path
 
 from ..errors import IesmError
 from . import layouts
+from .checks import check_depth_scale
 from .recording import Recording
 
 #: layout name -> (detector, opener); "ours" is our frame directory (scene.json), read by `FrameSet`
@@ -21,17 +22,23 @@ EXPECTED = ("expected one of: our frame directory (scene.json), 7-Scenes/3DMatch
             "intrinsic/), TUM RGB-D (rgb.txt, depth.txt, groundtruth.txt)")
 
 
-def detect_layout(directory: str | Path) -> str:
-    """The layout name of `directory` ("ours", "7scenes", "replica", "scannet", "tum")."""
+def matching_layouts(directory: str | Path) -> list[str]:
+    """Every layout name `directory` looks like, in `detect_layout`'s order of preference ("3dmatch"
+    is 7-Scenes' other name and not listed apart)."""
     directory = Path(directory)
     if not directory.is_dir():
         raise IesmError("not a directory", directory)
-    if (directory / "scene.json").is_file():
-        return "ours"
-    for name, (detect, _open) in LAYOUTS.items():
-        if detect(directory):
-            return name
-    raise IesmError(f"no frames found ({EXPECTED})", directory)
+    found = ["ours"] if (directory / "scene.json").is_file() else []
+    return found + [name for name, (detect, _open) in LAYOUTS.items() if name != "3dmatch" and detect(directory)]
+
+
+def detect_layout(directory: str | Path) -> str:
+    """The layout name of `directory` ("ours", "7scenes", "replica", "scannet", "tum"): the first
+    of `matching_layouts` (callers warn when there are several; --layout chooses)."""
+    found = matching_layouts(directory)
+    if not found:
+        raise IesmError(f"no frames found ({EXPECTED})", directory)
+    return found[0]
 
 
 def open_recording(directory: str | Path, layout: str | None = None, depth_scale: float | None = None) -> Recording:
@@ -43,8 +50,8 @@ def open_recording(directory: str | Path, layout: str | None = None, depth_scale
         raise IesmError("our own frame directory is read with FrameSet.open", directory)
     if layout not in LAYOUTS:
         raise IesmError(f"unknown layout {layout!r} (choose from ours, {', '.join(LAYOUTS)})", None, "--layout")
-    if depth_scale is not None and not depth_scale > 0:
-        raise IesmError(f"depth scale must be > 0, got {depth_scale}", None, "--depth-scale")
+    if depth_scale is not None:
+        depth_scale = check_depth_scale(depth_scale, None, "--depth-scale")
     detect, opener = LAYOUTS[layout]
     if not directory.is_dir():
         raise IesmError("not a directory", directory)

@@ -18,16 +18,18 @@ tells whether a directory looks like that layout.
 
 from __future__ import annotations
 
-import json
+import math
 from pathlib import Path
 from typing import Optional
 
 import numpy as np
 
 from ..errors import IesmError
-from .checks import BadFrame
+from ..fileio import load_json
+from .checks import BadFrame, check_depth_scale
 from .ours import Intrinsics
-from .recording import FrameRef, Recording, image_size, intrinsics_from_matrix, numbered, read_matrix
+from .recording import (FrameRef, Recording, frame_size, intrinsics_from_matrix, make_intrinsics, numbered,
+                        read_list, read_matrix)
 
 MAX_DT = 0.02  # s, TUM association tolerance (as the benchmark's associate.py)
 SEVEN_SCENES_K = (585.0, 585.0, 320.0, 240.0)
@@ -35,6 +37,8 @@ REPLICA_DEFAULT = {"w": 1200, "h": 680, "fx": 600.0, "fy": 600.0, "cx": 599.5, "
 TUM_K = {"freiburg1": (517.3, 516.5, 318.6, 255.3), "freiburg2": (520.9, 521.0, 325.1, 249.7),
          "freiburg3": (535.4, 539.2, 320.1, 247.6)}
 TUM_DEFAULT_K = (525.0, 525.0, 319.5, 239.5)
+#: largest cam_params.json read (bytes)
+MAX_PARAMS_BYTES = 1024 * 1024
 
 
 def _pose_or_error(path: Path, shape=(4, 4)) -> tuple[Optional[np.ndarray], str]:
@@ -67,7 +71,9 @@ def open_sevenscenes(directory: Path, depth_scale: float | None = None) -> Recor
             pose, err = _pose_or_error(Path(f"{stem}.pose.txt"))
             name = f"{seq.name}/frame-{number:06d}" if seq != directory else f"frame-{number:06d}"
             refs.append(FrameRef(name, color, Path(f"{stem}.depth.png"), pose, f"{stem}.pose.txt", err))
-    width, height = image_size(refs[0].depth) if refs[0].depth.is_file() else image_size(refs[0].color)
+    if not refs:
+        raise IesmError("no 7-Scenes frames: colour images must be named frame-NNNNNN.color.jpg or .png", directory)
+    width, height = frame_size(refs)
     if k_path is not None:
         try:
             k = read_matrix(k_path, (3, 3))
@@ -95,39 +101,35 @@ def open_replica(directory: Path, depth_scale: float | None = None) -> Recording
                         if (p / "cam_params.json").is_file()), None)
     cam = dict(REPLICA_DEFAULT)
     if params_path is not None:
-        try:
-            cam.update(json.loads(params_path.read_text(encoding="utf-8"))["camera"])
-        except (OSError, ValueError, KeyError, TypeError) as exc:
-            raise IesmError(f"cam_params.json must hold a 'camera' object ({exc})", params_path) from None
+        params = load_json(params_path, max_bytes=MAX_PARAMS_BYTES, allow_nan=False)
+        if not isinstance(params, dict) or not isinstance(params.get("camera"), dict):
+            raise IesmError("cam_params.json must hold a 'camera' object", params_path)
+        cam.update(params["camera"])
         notes.append(f"intrinsics and depth scale from {params_path}")
     else:
         notes.append("no cam_params.json: Replica's usual 1200 x 680, f = 600, scale 6553.5 assumed")
     traj_path = directory / "traj.txt"
-    try:
-        rows = [line.split() for line in traj_path.read_text(encoding="utf-8").splitlines() if line.strip()]
-    except (OSError, UnicodeDecodeError) as exc:
-        raise IesmError(f"cannot read ({exc})", traj_path) from None
+    lines = [line for line in read_list(traj_path) if line.strip()]  # each split only when its frame is read
     refs = []
     for number, color in numbered((directory / "results").iterdir(), r"frame(\d+)\.jpg"):
         depth = directory / "results" / f"depth{number:06d}.png"
         source = f"{traj_path}:{number + 1}"
         pose, err = None, ""
-        if number >= len(rows):
-            err = f"traj.txt has {len(rows)} lines, none for frame {number}"
-        elif len(rows[number]) != 16:
-            err = f"a pose line must hold 16 numbers, found {len(rows[number])}"
+        row = lines[number].split() if number < len(lines) else None
+        if row is None:
+            err = f"traj.txt has {len(lines)} lines, none for frame {number}"
+        elif len(row) != 16:
+            err = f"a pose line must hold 16 numbers, found {len(row)}"
         else:
             try:
-                pose = np.array([float(v) for v in rows[number]], np.float64).reshape(4, 4)
+                pose = np.array([float(v) for v in row], np.float64).reshape(4, 4)
             except ValueError:
                 err = "a pose line must hold 16 numbers"
         refs.append(FrameRef(f"frame{number:06d}", color, depth, pose, source, err))
-    try:
-        intr = Intrinsics(width=int(cam["w"]), height=int(cam["h"]), fx=float(cam["fx"]), fy=float(cam["fy"]),
-                          cx=float(cam["cx"]), cy=float(cam["cy"]))
-        scale = float(depth_scale or cam["scale"])
-    except (ValueError, TypeError, KeyError) as exc:
-        raise IesmError(f"unusable camera parameters ({exc})", params_path or directory) from None
+    source = params_path or directory
+    intr = make_intrinsics(cam.get("w"), cam.get("h"), cam.get("fx"), cam.get("fy"), cam.get("cx"), cam.get("cy"),
+                           source)
+    scale = check_depth_scale(depth_scale if depth_scale is not None else cam.get("scale"), source, "scale")
     return Recording("replica", directory, intr, scale, refs, notes=notes, up=(0.0, 0.0, 1.0))
 
 
@@ -146,8 +148,8 @@ def open_scannet(directory: Path, depth_scale: float | None = None) -> Recording
         pose, err = _pose_or_error(pose_path)
         refs.append(FrameRef(f"frame {number}", color, depth, pose, str(pose_path), err))
     if not refs:
-        return Recording("scannet", directory, Intrinsics(width=1, height=1, fx=1, fy=1, cx=0, cy=0), 1000.0, [])
-    width, height = image_size(refs[0].depth)
+        raise IesmError("no ScanNet frames: depth images must be named depth/N.png", directory)
+    width, height = frame_size(refs)
     k_path = directory / "intrinsic" / "intrinsic_depth.txt"
     if not k_path.is_file():
         raise IesmError("ScanNet export without intrinsic/intrinsic_depth.txt (4 x 4 depth camera matrix)", k_path)
@@ -167,19 +169,25 @@ def is_tum(directory: Path) -> bool:
     return (directory / "rgb.txt").is_file() and (directory / "depth.txt").is_file()
 
 
-def _stamped(path: Path) -> list[tuple[float, list[str]]]:
-    """(timestamp s, remaining fields) of every non-comment line of a TUM list file."""
-    if not path.is_file():
-        raise IesmError("file is missing", path)
+def _stamped(path: Path, min_fields: int = 2) -> list[tuple[float, list[str]]]:
+    """(timestamp s, remaining fields) of every non-comment line of a TUM list file, each holding
+    at least `min_fields` fields (the timestamp and a file name, or the 8 of a ground-truth pose)."""
     out = []
-    for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+    for n, line in enumerate(read_list(path), 1):
         fields = line.split()
         if not fields or fields[0].startswith("#"):
             continue
         try:
-            out.append((float(fields[0]), fields[1:]))
+            stamp = float(fields[0])
         except ValueError:
-            raise IesmError(f"line must start with a timestamp: {line[:60]!r}", path, f"line {n}") from None
+            stamp = math.nan
+        if not math.isfinite(stamp):
+            raise IesmError(f"line must start with a timestamp (a finite number): {line[:60]!r}", path,
+                            f"line {n}")
+        if len(fields) < min_fields:
+            raise IesmError(f"line must hold a timestamp and {min_fields - 1} more fields, found "
+                            f"{len(fields) - 1}: {line[:60]!r}", path, f"line {n}")
+        out.append((stamp, fields[1:]))
     return out
 
 
@@ -207,7 +215,9 @@ def open_tum(directory: Path, depth_scale: float | None = None) -> Recording:
     rgb = _stamped(directory / "rgb.txt")
     depth = _stamped(directory / "depth.txt")
     gt_path = directory / "groundtruth.txt"
-    gt = _stamped(gt_path) if gt_path.is_file() else []
+    gt = _stamped(gt_path, 8) if gt_path.exists() else []
+    rgb.sort(key=lambda row: row[0])  # _nearest bisects
+    gt.sort(key=lambda row: row[0])
     rgb_t = np.array([t for t, _ in rgb])
     gt_t = np.array([t for t, _ in gt])
     refs = []
@@ -228,7 +238,10 @@ def open_tum(directory: Path, depth_scale: float | None = None) -> Recording:
                              f"{gt_path}:{t:.6f}", err))
     key = next((k for k in TUM_K if k in directory.name or k in str(directory)), None)
     fx, fy, cx, cy = TUM_K.get(key, TUM_DEFAULT_K)
-    width, height = image_size(refs[0].depth) if refs else (640, 480)
+    if not refs:
+        raise IesmError(f"no TUM frame: no depth.txt entry has a colour frame within {MAX_DT * 1000:.0f} ms",
+                        directory)
+    width, height = frame_size(refs)
     notes = [f"{len(refs)} depth frames associated with colour and pose within {MAX_DT * 1000:.0f} ms",
              f"intrinsics of {key}" if key else "intrinsics: TUM's default 525 / 319.5 / 239.5 (folder name "
              "names no freiburg camera)", "depth uint16 / 5000 m" if depth_scale is None else

@@ -19,13 +19,14 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from ..errors import IesmError
 from ..store.model import Count
-from ..fileio import atomic_write, read_image, read_json_model, read_npz, write_png, write_text
+from ..fileio import atomic_write, read_image, read_json_model, read_npz, read_text, write_png, write_text
 
 FORMAT = "iesm-frames"
 VERSION = 1
 DEPTH_SCALE = 1000.0  # depth png units per metre (millimetres)
 MAX_DEPTH_M = 65.535  # largest depth a uint16 millimetre png can hold
 MAX_TRANSLATION_M = 10_000.0  # a camera farther from the origin is a corrupt pose (m)
+MAX_POSE_BYTES = 64 * 1024  # largest pose.txt read
 
 
 class Intrinsics(BaseModel):
@@ -174,13 +175,11 @@ def write_frame_features(directory: str | Path, features: np.ndarray) -> None:
 
 
 def _read_pose(path: Path) -> np.ndarray:
-    if not path.is_file():
-        raise IesmError("file is missing", path)
+    rows = [line.split() for line in read_text(path, max_bytes=MAX_POSE_BYTES).split("\n") if line.strip()]
     try:
-        rows = [line.split() for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
         pose = np.array([[float(v) for v in row] for row in rows], dtype=np.float64) \
             if all(len(r) == 4 for r in rows) else None
-    except (OSError, UnicodeDecodeError, ValueError):
+    except ValueError:
         raise IesmError("pose must be 4 lines of 4 numbers", path) from None
     if pose is None or pose.shape != (4, 4):
         raise IesmError(f"pose must be a 4x4 matrix, got {len(rows)} lines of "

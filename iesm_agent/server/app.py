@@ -20,6 +20,7 @@ import functools
 import hmac
 import json
 import logging
+import re
 import socket
 import sys
 from typing import Any, Callable
@@ -117,28 +118,47 @@ def _map_reader(service: MapService, name: str) -> Callable[[], Any]:
     return read
 
 
-def transport_security(host: str, extra_hosts: tuple[str, ...] = ()) -> TransportSecuritySettings:
-    """DNS-rebinding protection: Host must be a loopback name, `host` (unless a wildcard address)
-    or one of `extra_hosts`, on any port; Origin, when sent, the same over http(s)."""
+def transport_security(host: str, port: int, extra_hosts: tuple[str, ...] = ()) -> TransportSecuritySettings:
+    """DNS-rebinding protection, names compared exactly (lower case): Host must be a loopback
+    name, `host` (unless a wildcard address) or one of `extra_hosts`, alone or with the port
+    served (`port`); Origin, when sent, one of those names over http(s), with or without a port
+    (a local page on another port may call; `checked_host_headers` refuses a port that is not a
+    number)."""
     names = list(LOOPBACK_HOSTS) + [h for h in (host, *extra_hosts) if h not in ("0.0.0.0", "::", "")]
-    names = list(dict.fromkeys(f"[{n}]" if ":" in n else n for n in names))
+    names = list(dict.fromkeys(f"[{n}]" if _is_ipv6(n) else n for n in names))
     return TransportSecuritySettings(
-        enable_dns_rebinding_protection=True, allowed_hosts=[f"{n}:*" for n in names] + names,
-        allowed_origins=[f"{scheme}://{n}:*" for n in names for scheme in ("http", "https")])
+        enable_dns_rebinding_protection=True, allowed_hosts=names + [f"{n}:{port}" for n in names],
+        allowed_origins=[f"{scheme}://{n}{any_port}" for n in names for scheme in ("http", "https")
+                         for any_port in ("", ":*")])
 
 
-def http_app(server: MCPServer, host: str, extra_hosts: tuple[str, ...] = ()):
-    """The Starlette app: streamable HTTP at `/mcp` (JSON responses, per-client sessions), with
-    the Host and Origin headers lower-cased first (host names are case-insensitive)."""
+def _is_ipv6(name: str) -> bool:
+    import ipaddress
+
+    try:
+        return isinstance(ipaddress.ip_address(name), ipaddress.IPv6Address)
+    except ValueError:
+        return False
+
+
+def http_app(server: MCPServer, host: str, port: int, extra_hosts: tuple[str, ...] = ()):
+    """The Starlette app: streamable HTTP at `/mcp` (JSON responses, per-client sessions) for a
+    server listening on `host`:`port`, the Host and Origin headers checked (`checked_host_headers`)."""
     extra_hosts = tuple(h.lower() for h in extra_hosts)
-    return lowercase_host_headers(server.streamable_http_app(
+    return checked_host_headers(server.streamable_http_app(
         streamable_http_path=MCP_PATH, json_response=True,
-        transport_security=transport_security(host.lower(), extra_hosts), host=host))
+        transport_security=transport_security(host.lower(), port, extra_hosts), host=host))
 
 
-class lowercase_host_headers:  # noqa: N801 (an ASGI wrapper used like a function)
+#: an Origin header as browsers send it: scheme, host (name or [IPv6]) and an optional numeric port
+_ORIGIN = re.compile(r"https?://(?:[a-z0-9.-]+|\[[0-9a-f:.]+\])(?::[0-9]{1,5})?")
+
+
+class checked_host_headers:  # noqa: N801 (an ASGI wrapper used like a function)
     """ASGI wrapper lower-casing the `host` and `origin` request headers, so that the SDK's
-    DNS-rebinding check (which compares exactly) accepts `LOCALHOST:port` as `localhost:port`."""
+    DNS-rebinding check (which compares exactly) accepts `LOCALHOST:port` as `localhost:port`, and
+    refusing (403) an Origin that is not scheme://host[:port] with a numeric port, which the SDK's
+    `host:*` pattern would let through (`http://localhost:1@evil.example`)."""
 
     def __init__(self, app):
         self.app = app
@@ -151,6 +171,12 @@ class lowercase_host_headers:  # noqa: N801 (an ASGI wrapper used like a functio
             scope = dict(scope)
             scope["headers"] = [(k, v.lower()) if k in (b"host", b"origin") else (k, v)
                                 for k, v in scope.get("headers", [])]
+            origin = next((v for k, v in scope["headers"] if k == b"origin"), None)
+            if origin is not None and not _ORIGIN.fullmatch(origin.decode("latin-1")):
+                from starlette.responses import Response
+
+                await Response("Invalid Origin header", status_code=403)(scope, receive, send)
+                return
         await self.app(scope, receive, send)
 
 
@@ -237,7 +263,7 @@ async def serve_http(service: MapService, host: str, port: int, token: str | Non
     quiet_sdk_logging()
     sock = bind(host, port)
     await service.warm_up()
-    server = uvicorn_server(http_app(build_server(service, token), host, extra_hosts))
+    server = uvicorn_server(http_app(build_server(service, token), host, sock.getsockname()[1], extra_hosts))
     bound = sock.getsockname()
     shown = f"[{bound[0]}]" if ":" in bound[0] else bound[0]
     print(f"iesm serve: MCP on http://{shown}:{bound[1]}{MCP_PATH} ({', '.join(service.maps)}; "

@@ -15,7 +15,7 @@ from html import escape
 from pathlib import Path
 
 from ...errors import IesmError
-from ...fileio import write_text
+from ...fileio import utf8_text, write_text
 
 ASSETS = Path(__file__).with_name("assets")
 
@@ -54,7 +54,9 @@ def page(title: str, body: str, data, scripts: list[str], kind: str) -> str:
 
 
 def write_page(path: str | Path, html: str, limit: int) -> int:
-    """Write `html` atomically; refuse a page over `limit` bytes (the stated bound). Returns its size."""
+    """Write `html` atomically; refuse a page over `limit` bytes (the stated bound). Returns its size.
+    Text that is not valid UTF-8 (a path's undecodable bytes) is written as U+FFFD."""
+    html = utf8_text(html)
     size = len(html.encode("utf-8"))
     if size > limit:
         raise IesmError(f"the page would be {size / 1e6:.1f} MB, over the {limit / 1e6:.0f} MB bound", path)

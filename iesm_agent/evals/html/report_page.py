@@ -11,6 +11,12 @@ from .page import page
 from .shapes import svg_markup
 
 
+def _text(value) -> str:
+    """Any value from a run file as page text: `str` of it, escaped (numbers too: a run directory
+    is something people send each other, and a field's type is not the page's to trust)."""
+    return escape(str(value))
+
+
 def _pct(x) -> str:
     return "-" if x is None else f"{100 * x:.1f}"
 
@@ -18,9 +24,9 @@ def _pct(x) -> str:
 def _osr_cell(cell: dict) -> str:
     if not cell["n"]:
         return '<td class="num">-</td>'
-    return (f'<td class="num" data-n="{cell["n"]}"><span class="osr">{_pct(cell["osr"])}</span>'
+    return (f'<td class="num" data-n="{_text(cell["n"])}"><span class="osr">{_pct(cell["osr"])}</span>'
             f'<span class="ci">{_pct(cell["lo"])}&ndash;{_pct(cell["hi"])}</span>'
-            f'<span class="n">n&nbsp;{cell["n"]}</span></td>')
+            f'<span class="n">n&nbsp;{_text(cell["n"])}</span></td>')
 
 
 def metrics_section(data: dict) -> str:
@@ -31,7 +37,7 @@ def metrics_section(data: dict) -> str:
         cells = "".join(_osr_cell(m["types"][t["id"]]) for t in types)
         rows.append(f'<tr><th scope="row">{escape(m["variant"])}</th>{cells}{_osr_cell(m["overall"])}'
                     f'<td class="num">{m["mrr"]:.3f}</td><td class="num">{_pct(m["top3"])}</td>'
-                    f'<td class="num">{_pct(m["nsr"])}</td><td class="num">{m["failures"]}</td></tr>')
+                    f'<td class="num">{_pct(m["nsr"])}</td><td class="num">{_text(m["failures"])}</td></tr>')
     return ('<section id="metrics" aria-labelledby="h-metrics"><h2 id="h-metrics">Success by query type</h2>'
             '<p class="note">O-SR (%) with its 95 % Wilson interval and the number of queries n; MRR and '
             'top-3 over all queries; N-SR (%) over correct retrievals whose trial was judged.</p>'
@@ -48,8 +54,8 @@ def significance_section(data: dict) -> str:
     titles = {t["id"]: t["title"] for t in data["types"]}
     rows = "".join(
         f'<tr class="{"sig" if t["p"] < 0.05 else ""}"><td>{escape(t["a"])}</td><td>{escape(t["b"])}</td>'
-        f'<td>{escape(titles.get(t["type"], t["type"]))}</td><td class="num">{t["n"]}</td>'
-        f'<td class="num">{t["a_only"]}</td><td class="num">{t["b_only"]}</td><td class="num">{t["p"]:.4f}</td></tr>'
+        f'<td>{escape(titles.get(t["type"], t["type"]))}</td><td class="num">{_text(t["n"])}</td>'
+        f'<td class="num">{_text(t["a_only"])}</td><td class="num">{_text(t["b_only"])}</td><td class="num">{t["p"]:.4f}</td></tr>'
         for t in tests)
     return ('<section id="significance" aria-labelledby="h-sig"><h2 id="h-sig">Paired significance</h2>'
             '<p class="note">Exact two-sided McNemar test on per-query correctness; A only / B only: queries only '
@@ -66,7 +72,7 @@ def groups_section(data: dict) -> str:
     if not grouped:
         return ""
     rows = "".join(
-        f'<tr><th scope="row">{escape(m["variant"])}</th><td class="num">{m["groups"]["overall"]["n"]}</td>'
+        f'<tr><th scope="row">{escape(m["variant"])}</th><td class="num">{_text(m["groups"]["overall"]["n"])}</td>'
         f'<td class="num">{_pct(m["groups"]["overall"]["all_correct"])}</td>'
         f'<td class="num">{_pct(m["groups"]["overall"]["consistent_pick"])}</td>'
         f'<td>{escape(", ".join(w["group"] for w in m["groups"].get("worst", [])[:5]))}</td></tr>' for m in grouped)
@@ -87,13 +93,13 @@ def _row(i: int, r: dict, titles: dict[str, str]) -> str:
     pred = r["predicted"]
     shown = "nothing" if pred is None else f"#{pred} {r['names'].get(str(pred), '')}".strip()
     mark = "right" if r["correct"] else "wrong"
-    return (f'<tr tabindex="0" data-key="{i}" data-variant="{escape(r["variant"])}" data-type="{escape(r["type"] or "-")}" '
+    return (f'<tr tabindex="0" data-key="{_text(i)}" data-variant="{escape(r["variant"])}" data-type="{escape(r["type"] or "-")}" '
             f'data-correct="{int(r["correct"])}" data-qid="{escape(r["id"])}">'
             f'<td>{escape(r["id"])}</td><td>{escape(r["variant"])}</td>'
             f'<td>{escape(titles.get(r["type"] or "-", r["type"] or "-"))}</td>'
             f'<td class="query">{escape(r["query"])}</td><td>{escape(shown)}</td>'
             f'<td class="{mark}"><span aria-hidden="true">{"&#10003;" if r["correct"] else "&#10007;"}</span> {mark}</td>'
-            f'<td class="num">{r["rank"] if r["rank"] is not None else "-"}</td>'
+            f'<td class="num">{_text(r["rank"]) if r["rank"] is not None else "-"}</td>'
             f'<td class="num">{len(r["failures"]) or ""}</td></tr>')
 
 
@@ -143,7 +149,8 @@ def header(data: dict) -> str:
         facts = run["facts"]
         parts.append(f'<p>{escape(label)}<code>{escape(run["directory"])}</code>: provider '
                      f'<code>{escape(str(run["provider"]))}</code>, suites <code>{escape(suites)}</code>'
-                     + (f', {facts.get("queries")} queries, wall {facts.get("wall_s")} s' if facts else "") + "</p>"
+                     + (f', {_text(facts.get("queries"))} queries, wall {_text(facts.get("wall_s"))} s' if facts else "")
+                     + "</p>"
                      + (f"<details><summary>prompt templates by content hash</summary><ul>{hashes}</ul></details>"
                         if hashes else ""))
     limits = data["limits"]

@@ -12,15 +12,17 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Optional
+
+from pydantic import BaseModel, ConfigDict, ValidationError
 
 from ...errors import IesmError
-from ...fileio import load_json
+from ...fileio import load_json, validation_message
 from ...store.refs import open_map, resolve_map_path
-from ..journal import ResultRecord, read_journal
+from ..journal import RESULTS, RUN_CONFIG, ResultRecord, read_journal
 from ..query_types import UNTYPED, ordered_types, type_title
-from ..report import build_summary
-from ..runner import RESULTS, RUN_CONFIG
 from ..significance import paired_test
+from ..summary import build_summary
 from .shapes import map_layers
 
 #: the most (query, variant) rows one page shows
@@ -46,26 +48,70 @@ class Run:
     variants: list[str] = field(default_factory=list)
 
 
+class VariantView(BaseModel):
+    """One variant of `run.json` as the page reads it: its name."""
+
+    model_config = ConfigDict(extra="ignore")
+
+    name: str
+
+
+class RunFileView(BaseModel):
+    """The fields of a run's `run.json` the page shows (others ignored; a file written by an older
+    version may lack some): wrong types are refused by name."""
+
+    model_config = ConfigDict(extra="ignore", allow_inf_nan=False)
+
+    provider: Optional[str] = None
+    suites: list[str] = []
+    variants: list[VariantView] = []
+    prompt_hashes: dict[str, dict[str, str]] = {}
+
+
+class RunFacts(BaseModel):
+    """`summary.json`'s `run` facts the page's header shows."""
+
+    model_config = ConfigDict(extra="ignore", allow_inf_nan=False)
+
+    queries: Optional[int] = None
+    wall_s: Optional[float] = None
+
+
+def _read_model(path: Path, model: type[BaseModel], part: str | None = None) -> dict:
+    """`model` validated from the JSON file `path` (or its member `part`), as a dict; a missing
+    file is an empty one. NaN / Infinity, wrong types or a file that is no JSON object are one
+    `IesmError` naming the file and field."""
+    if not path.is_file():
+        return {}
+    data = load_json(path, allow_nan=False)
+    if part is not None:
+        data = data.get(part, {}) if isinstance(data, dict) else None
+    if not isinstance(data, dict):
+        raise IesmError("expected a JSON object", path, part)
+    try:
+        return model.model_validate(data).model_dump(exclude_none=True)
+    except ValidationError as exc:
+        message, field = validation_message(exc)
+        raise IesmError(message, path, f"{part}.{field}" if part and field else part or field) from None
+
+
 def load_run(directory: str | Path, label: str = "") -> Run:
     """Read `directory` (run.json, results.jsonl, summary.json when present); one `IesmError`
-    naming the file when it is not an eval run directory."""
+    naming the file when it is not an eval run directory or a file in it is damaged."""
     directory = Path(directory)
     if not directory.is_dir():
         raise IesmError("not a directory (expected an eval run directory)", directory)
     if not (directory / RESULTS).is_file():
         raise IesmError(f"not an eval run directory: no {RESULTS}", directory)
-    config = load_json(directory / RUN_CONFIG) if (directory / RUN_CONFIG).is_file() else {}
-    if not isinstance(config, dict):
-        raise IesmError("expected a JSON object", directory / RUN_CONFIG)
-    summary = load_json(directory / "summary.json") if (directory / "summary.json").is_file() else {}
-    facts = summary.get("run", {}) if isinstance(summary, dict) else {}
+    config = _read_model(directory / RUN_CONFIG, RunFileView)
+    facts = _read_model(directory / "summary.json", RunFacts, "run")
     latest = {r.key: r for r in read_journal(directory / RESULTS)}
     if not latest:
         raise IesmError(f"the run has no results yet ({RESULTS} is empty)", directory)
-    named = [v.get("name") for v in config.get("variants", []) if isinstance(v, dict)]
+    named = [v["name"] for v in config.get("variants", [])]
     seen = list(dict.fromkeys(r.variant for r in latest.values()))
     variants = [v for v in named if v in seen] + [v for v in seen if v not in named]
-    return Run(label, directory, config, facts if isinstance(facts, dict) else {}, list(latest.values()), variants)
+    return Run(label, directory, config, facts, list(latest.values()), variants)
 
 
 def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
