@@ -9,7 +9,7 @@ import numpy as np
 from iesm_agent.providers.base import Message
 from iesm_agent.providers.offline import tasks
 from iesm_agent.providers.offline.prompt import read_prompt
-from iesm_agent.understanding import analyse_query, ground_query
+from iesm_agent.understanding import analyse_query, ground_query, stem
 
 DIM = 8
 
@@ -82,3 +82,17 @@ def _room_expert(query):
 def test_the_room_expert_ranks_by_the_grounded_room():
     assert _room_expert("the sink in the scullery")[0] == 2
     assert _room_expert("the gizmo in the bathroom")[:1] == [3]  # the only kettle, grounded by label
+
+
+def test_a_misspelt_map_label_is_read_as_that_label_without_an_encoder():
+    labels = ["flux capacitor", "kettle", "sofa"]
+    q = analyse_query("take me to the flux capaciter")
+    assert not q.named and stem("capacitor") not in q.overlap
+    grounded = ground_query(q, ROOMS, labels, None)
+    assert stem("capacitor") in grounded.overlap and grounded.target_phrase == q.unknown_target
+    zorq = analyse_query("take me to the zorq")  # one edit from two labels: no call
+    assert ground_query(zorq, ROOMS, ["zorb lamp", "zorf tray"], None) is zorq
+    lines = [json.dumps({"id": i, "label": label}) for i, label in enumerate(labels, 1)]
+    text = (f"Reply with ranked_instance_ids, at most 2.\n<query>{json.dumps('take me to the flux capaciter')}"
+            "</query>\n<candidates>\n" + "\n".join(lines) + "\n</candidates>")
+    assert tasks.rank(read_prompt([Message(role="user", content=text)]))["ranked_instance_ids"][:1] == [1]

@@ -82,3 +82,16 @@ def test_typed_shorthand_is_read_as_words():
 def test_misspelt_nouns_are_corrected_before_parsing():
     assert analyse_query("take me to the bookcsae in the study").targets == {"bookshelf": 1.0}
     assert _target("the wardorbe next to the bed") == "wardrobe"
+
+
+@pytest.mark.parametrize("text, room", [("how do I get out of the garage", "garage"),
+                                        ("I'd like to leave the bathroom now", "bathroom"),
+                                        ("show me the way out of the bedroom", "bedroom")])
+def test_the_way_out_of_a_room_is_its_door(text, room):
+    info = analyse_query(text)
+    assert info.targets == {"door": 1.0} and info.rooms.get(room) == 1.0
+
+
+def test_a_room_to_go_to_is_not_a_way_out_and_a_named_kind_stays():
+    assert "door" not in analyse_query("bring me to the garage").targets
+    assert analyse_query("leave the mug by the kettle").targets.get("cup") == 1.0

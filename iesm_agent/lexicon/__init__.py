@@ -110,11 +110,18 @@ class Lexicon:
         hit = self._correction_cache.get(token)
         if hit is not None:
             return hit
+        best = self.closest(token, self._spelling_targets)
+        if len(self._correction_cache) < 100_000:
+            self._correction_cache[token] = best
+        return best
+
+    def closest(self, token: str, words: frozenset[str]) -> str:
+        """The word of `words` that `token` misspells by the rules of `correct`, or `token`."""
         from rapidfuzz.distance import OSA
         from rapidfuzz.process import extract
 
         limit = 1 if len(token) < 7 else 2
-        found = extract(token, self._spelling_targets, scorer=OSA.distance, score_cutoff=limit, limit=6)
+        found = extract(token, words, scorer=OSA.distance, score_cutoff=limit, limit=6)
         # two edits only keep the first letter (people rarely mistype it: "cubbard" is a
         # cupboard, "scullery" no cutlery); among equally close words, those keeping it first
         found = [(w, d) for w, d, _ in found if d < 2 or w[0] == token[0]]
@@ -122,10 +129,7 @@ class Lexicon:
         found = sorted(same_start or found, key=lambda wd: wd[1])
         closest = [w for w, d in found if d == found[0][1]] if found else []
         # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
-        best = min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
-        if len(self._correction_cache) < 100_000:
-            self._correction_cache[token] = best
-        return best
+        return min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
 
     def spell(self, tokens: list[str]) -> list[str]:
         """`tokens` with misspellings corrected (`correct`) and run-together phrases the lexicon

@@ -1,6 +1,6 @@
 """Words the lexicon does not know, grounded in the map: a target or room phrase that matches
-no lexicon entry ("the gizmo", "in the scullery") is mapped with the sentence encoder to the
-nearest label or room present among the candidates."""
+no lexicon entry ("the gizmo", "in the scullery") is read as the map label or room it misspells,
+else mapped with the sentence encoder to the nearest label or room among the candidates."""
 
 from __future__ import annotations
 
@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from .labels import label_concepts
+from .text import stem
 from ..lexicon import load_lexicon
 from .query import QueryInfo, functional_kin
 
@@ -24,39 +25,56 @@ _grounded: dict[tuple, QueryInfo] = {}
 
 
 def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], encoder: Any) -> QueryInfo:
-    """`info` with its unknown target phrase read as the categories of the nearest map label and
-    its unknown room phrase as the nearest map room (cosine >= MIN_SIMILARITY); `info` itself
-    when there is nothing to ground, no encoder, or nothing near enough. `rooms`/`labels` are
+    """`info` with its unknown target phrase read as the map label it misspells, else as the
+    categories of the nearest map label, and its unknown room phrase likewise as a map room
+    (cosine >= MIN_SIMILARITY); `info` itself when there is nothing to ground or nothing near
+    enough (without an encoder only misspellings are grounded). `rooms`/`labels` are
     the room and label strings present (as the candidates carry them)."""
-    if encoder is None or not (info.unknown_target or info.unknown_room):
+    if not (info.unknown_target or info.unknown_room):
         return info
     rooms, labels = tuple(sorted(set(rooms))), tuple(sorted(set(labels)))
-    key = (info.text, rooms, labels, encoder.name)
+    key = (info.text, rooms, labels, getattr(encoder, "name", None))
     hit = _grounded.get(key)
     if hit is not None:
         return hit
-    targets, found_rooms = dict(info.targets), dict(info.rooms)
+    targets, found_rooms, overlap = dict(info.targets), dict(info.rooms), info.overlap
     if info.unknown_target:
-        label, sim = _nearest(encoder, info.unknown_target, labels)
+        label = _misspelt_label(info.unknown_target, labels)
+        if label is not None:  # its words count as the query's, whatever the lexicon makes of them
+            overlap = overlap | {stem(w) for w in load_lexicon().tokens(label) if len(w) > 2}
+        elif encoder is not None:
+            label, _ = _nearest(encoder, info.unknown_target, labels)
         if label is not None:
             concepts = label_concepts(label)
             top = concepts[0][1] if concepts else 0.0
             targets.update({c: 1.0 for c, w in concepts if w >= top})
     if info.unknown_room:
-        room, _ = _nearest(encoder, info.unknown_room, rooms)
+        room = _misspelt_label(info.unknown_room, rooms)
+        if room is None and encoder is not None:
+            room, _ = _nearest(encoder, info.unknown_room, rooms)
         if room is not None:
             found_rooms[room] = 1.0
     grounded = info
-    if targets != info.targets or found_rooms != info.rooms:
+    if targets != info.targets or found_rooms != info.rooms or overlap != info.overlap:
         kin = functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0])
         grounded = dataclasses.replace(
-            info, targets=targets, kin=kin, rooms=found_rooms, memo={},
-            target_phrase=info.target_phrase or (info.unknown_target if targets != info.targets else None),
+            info, targets=targets, kin=kin, rooms=found_rooms, overlap=overlap, memo={},
+            target_phrase=info.target_phrase or (info.unknown_target if (targets, overlap) != (info.targets, info.overlap)
+                                                 else None),
             room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
     if len(_grounded) >= _CACHE_SIZE:
         _grounded.clear()
     _grounded[key] = grounded
     return grounded
+
+
+def _misspelt_label(phrase: str, options: Sequence[str]) -> str | None:
+    """The one option holding a word that a word of `phrase` misspells ("the gizmoo" and a map
+    label "gizmo": one letter doubled), by the lexicon's spelling rules; None otherwise."""
+    lex = load_lexicon()
+    words = {w: option for option in options for w in lex.tokens(option) if w.isalpha() and len(w) >= 4}
+    found = {words[fixed] for token in lex.tokens(phrase) if (fixed := lex.closest(token, frozenset(words))) != token}
+    return found.pop() if len(found) == 1 else None
 
 
 def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> tuple[str | None, float]:

@@ -79,6 +79,7 @@ class Structure:
     phrase: tuple[int, int] | None
     request: tuple[int, int]
     context: tuple[tuple[int, int], ...]
+    leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
 
     def modified_noun(self, offset: int) -> int | None:
         """Index of the noun that the word at character `offset` modifies (as an adjective,
@@ -148,7 +149,20 @@ def parse_request(text: str) -> Structure:
     context = tuple((s.start_char, s.end_char) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    return Structure(words, target, phrase, request, context)
+    return Structure(words, target, phrase, request, context, _left_place(doc, request))
+
+
+def _left_place(doc, request: tuple[int, int]) -> int | None:
+    """The noun the request wants out of: the object of "leave"/"exit", or the noun after "out
+    of" ("take me out of the bathroom"); None when it wants out of nothing."""
+    for t in doc:
+        if not request[0] <= t.idx < request[1] or t.pos_ not in _NOUNS:
+            continue
+        if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
+            return t.i
+        if t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out":
+            return t.i
+    return None
 
 
 def _stand_in(doc, index: int | None) -> bool:

@@ -290,9 +290,22 @@ def analyse_query(text: str) -> QueryInfo:
     if afford:
         top = max(afford.values())
         info.afford = {c: w / top for c, w in afford.items()}
+    if not info.named and _leaves_a_room(reading):
+        info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
+        info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
     return info
+
+
+def _leaves_a_room(reading: _Reading) -> bool:
+    """True when what the request wants out of is a room ("get me out of the garage")."""
+    left = reading.structure.leaving
+    if left is None:
+        return False
+    at = reading.structure.words[left].start
+    index = next((i for i, t in enumerate(reading.surface) if getattr(t, "at", -1) == at), None)
+    return any(s.has("room") and s.start <= index < s.end for s in reading.spans) if index is not None else False
 
 
 def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
@@ -373,6 +386,8 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
             info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
 
 
+#: the kind of object that is the way out of a room
+WAY_OUT = "door"
 #: share of an affordance weight a kind gets as functional kin of the named category
 _KIN_SCALE = 0.8
 #: a purpose counts as the named category's own when the category is among its first three
