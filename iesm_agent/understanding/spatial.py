@@ -82,201 +82,226 @@ class SpatialQuery:
 
 
 # -- reading the query -----------------------------------------------------------------------
-def parse_query(text: str) -> SpatialQuery:
-    """The spatial reading of `text` (no relations when it states none)."""
-    lex = load_lexicon()
-    toks = [t for t in lex.spell(lex.tokens(text)) if t not in lex.words["skip"] or t in ("one",)]
-    lemmas = lemmatise(lex, toks)
-    spans = lex.scan(lemmas)
-    cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
-              and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
-                       and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
-              # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
-              and not (s.end - s.start == 1 and toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start])}
-    attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
-    finals = clause_final_words(text)
-    out = SpatialQuery()
-    used: set[int] = set()  # starts of cat spans taken as landmarks
+class _Reader:
+    """One pass over a query's tokens: cues become relations, the category phrases after them
+    their landmarks (`used` holds the starts of the category spans taken as landmarks)."""
 
-    def attrs_before(start: int) -> tuple[tuple[str, str], ...]:
+    def __init__(self, text: str):
+        self.text = text
+        lex = self.lex = load_lexicon()
+        self.toks = toks = [t for t in lex.spell(lex.tokens(text)) if t not in lex.words["skip"] or t in ("one",)]
+        self.lemmas = lemmas = lemmatise(lex, toks)
+        spans = lex.scan(lemmas)
+        self.cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
+                       and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
+                                and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
+                       # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
+                       and not (s.end - s.start == 1 and toks[s.start].endswith("ing")
+                                and lemmas[s.start] != toks[s.start])}
+        self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+        self.finals = clause_final_words(text)
+        self.out = SpatialQuery()
+        self.used: set[int] = set()
+        self.last_landmark_end = -1
+        self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
+        self.pending_ordinal: Relation | None = None
+
+    def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards over attributes, colour suffixes and
         comparatives ("the green upper shelf", "the cream-coloured desk")."""
         found, end = [], start
-        suffixes = lex.words["color_suffixes"]
-        while end in attr_at or (end > 0 and (toks[end - 1] in _EXTREMES or toks[end - 1] in suffixes)):
-            if end in attr_at:
-                s = attr_at[end]
+        suffixes = self.lex.words["color_suffixes"]
+        while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes)):
+            if end in self.attr_at:
+                s = self.attr_at[end]
                 found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
                 end = s.start
             else:
                 end -= 1
         return tuple(found)
 
-    def next_cat(pos: int) -> int | None:
-        return next((j for j in range(pos, len(lemmas)) if j in cat_at and j not in used), None)
+    def next_cat(self, pos: int) -> int | None:
+        return next((j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used), None)
 
-    last_landmark_end = [-1]
-    taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
-
-    def landmark(rel: Relation, pos: int) -> bool:
-        j = next_cat(pos)
+    def landmark(self, rel: Relation, pos: int) -> bool:
+        """Take the next free category phrase from `pos` as a landmark of `rel`."""
+        j = self.next_cat(pos)
         if j is None:
             return False
-        used.add(j)
-        taken.setdefault(id(rel), []).append(j)
-        last_landmark_end[0] = cat_at[j].end
-        rel.landmarks.append(tuple(c for c in cat_at[j].values("cat")))
-        rel.landmark_attrs.append(attrs_before(j))
+        self.used.add(j)
+        self.taken.setdefault(id(rel), []).append(j)
+        self.last_landmark_end = self.cat_at[j].end
+        rel.landmarks.append(tuple(c for c in self.cat_at[j].values("cat")))
+        rel.landmark_attrs.append(self.attrs_before(j))
         return True
 
-    i = 0
-    pending_ordinal: Relation | None = None
-    negated: set[int] = set()  # indices of relations that follow a negation word
-    while i < len(lemmas):
-        if toks[i] in _NEGATIONS:
-            negated.add(len(out.relations))
-            i += 1
-            continue
-        if i in cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
-            i = cat_at[i].end
-            continue
-        word = toks[i]
-        if word in _EXTREMES:
-            out.relations.append(Relation("extreme", value=_EXTREMES[word]))
-            i += 1
-            continue
-        if word in _ORDINALS:
-            pending_ordinal = Relation("ordinal", order=_ORDINALS[word], value="left")
-            out.relations.append(pending_ordinal)
-            i += 1
-            continue
+    def read(self) -> SpatialQuery:
+        """The relations of the query, then its target."""
+        i, negated = 0, set()  # indices of relations that follow a negation word
+        toks, out = self.toks, self.out
+        while i < len(self.lemmas):
+            if toks[i] in _NEGATIONS:
+                negated.add(len(out.relations))
+                i += 1
+            elif i in self.cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
+                i = self.cat_at[i].end
+            elif toks[i] in _EXTREMES:
+                out.relations.append(Relation("extreme", value=_EXTREMES[toks[i]]))
+                i += 1
+            elif toks[i] in _ORDINALS:
+                self.pending_ordinal = Relation("ordinal", order=_ORDINALS[toks[i]], value="left")
+                out.relations.append(self.pending_ordinal)
+                i += 1
+            else:
+                i = self.cue(i)
+        for k in negated:
+            if k < len(out.relations):
+                out.relations[k].negated = True
+        return self.target()
+
+    def cue(self, i: int) -> int:
+        """Read the relation cue at `i` (if any); the position after it."""
+        toks = self.toks
         cue = next(((c, k) for c, k in sorted(_CUES.items(), key=lambda kv: -len(kv[0]))
                     if tuple(toks[i:i + len(c)]) == c), None)
         if cue is None:
-            i += 1
-            continue
+            return i + 1
         words, kind = cue
-        nxt = toks[i + len(words)] if i + len(words) < len(toks) else ""
         if is_destination(toks, i, len(words)):
-            i += len(words)
-            continue  # "head over to", "stop by", "walk up to": where to go, not a relation
-        if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), finals):
-            j = clause_landmark(cat_at, toks, i)
-            owner = next((r for r in out.relations if j in taken.get(id(r), ())), None)
-            if j is not None and (j not in used or (owner is not None and owner.kind == "with")):
-                if owner is not None:  # "with a lamp next to it": one fact, the clause says which way
-                    out.relations.remove(owner)
-                    used.discard(j)
-                rel = Relation(INVERSE_RELATION[kind])
-                landmark(rel, j)  # "the cabinet the printer sits on": the printer, seen from the cabinet
-                out.relations.append(rel)
-                i += len(words)
-                continue
-        i += len(words)
-        if kind == "on" and nxt in ("left", "right", "top"):
-            continue  # "on the left": the side word is the relation
-        if kind == "on" and i - len(words) >= 1 and toks[i - len(words) - 1] in _USE_VERBS:
-            continue  # "to sit on", "work on my computer": a use, not a place
+            return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
+        if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals) and self.inverse(i, kind):
+            return i + len(words)
+        return self.relation(i + len(words), words, kind)
+
+    def inverse(self, i: int, kind: str) -> bool:
+        """A stranded preposition of a relative clause ("the cabinet the printer sits on"): the
+        clause's noun is the landmark and the relation is seen from the target; False when the
+        clause has no such noun."""
+        j = clause_landmark(self.cat_at, self.toks, i)
+        owner = next((r for r in self.out.relations if j in self.taken.get(id(r), ())), None)
+        if j is None or (j in self.used and (owner is None or owner.kind != "with")):
+            return False
+        if owner is not None:  # "with a lamp next to it": one fact, the clause says which way
+            self.out.relations.remove(owner)
+            self.used.discard(j)
+        rel = Relation(INVERSE_RELATION[kind])
+        self.landmark(rel, j)
+        self.out.relations.append(rel)
+        return True
+
+    def relation(self, i: int, words: tuple[str, ...], kind: str) -> int:
+        """Read the relation of `kind` whose cue `words` ends before `i`; the position after it."""
+        toks, out = self.toks, self.out
+        nxt = toks[i] if i < len(toks) else ""
+        before = i - len(words) - 1  # the word before the cue
+        if kind == "on" and (nxt in ("left", "right", "top") or (before >= 0 and toks[before] in _USE_VERBS)):
+            return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
             out.relations.append(Relation("wall"))
-            i += 1
-            continue
-        if kind == "from" and pending_ordinal is not None:
-            if nxt in ("left", "right"):
-                pending_ordinal.value = nxt
-                i += 1
-            elif landmark(pending_ordinal, i):
-                pending_ordinal.value = "landmark"
-            continue
+            return i + 1
         if kind == "from":
-            continue
+            return self.ordinal_from(i, nxt)
         if kind == "facing":
-            j = next_cat(i)
+            j = self.next_cat(i)
             if j is not None:
-                used.add(j)
-                out.facing = tuple(cat_at[j].values("cat"))
-            continue
+                self.used.add(j)
+                out.facing = tuple(self.cat_at[j].values("cat"))
+            return i
         if kind in ("corner", "middle") and nxt == "of":
             rel = Relation(kind)
-            landmark(rel, i)  # "the middle of the bed": relative to that object
+            self.landmark(rel, i)  # "the middle of the bed": relative to that object
             out.relations.append(rel)
-            continue
+            return i
         if kind == "right" and nxt in _INTENSIFIED:
-            continue  # "right below the sink": an intensifier, not a side
-        before = i - len(words) - 1  # the word before the cue
-        if kind in ("corner", "middle", "wall") and before >= 0 and last_landmark_end[0] == before \
+            return i  # "right below the sink": an intensifier, not a side
+        if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
             out.relations[-1].landmark_where = kind  # "near the plant in the corner": the plant's place
-            continue
-        if kind in ("left", "right", "front", "behind"):
-            rel = Relation(kind)
-            if nxt == "of":
-                landmark(rel, i)
-            elif kind == "front" and toks[i - 2:i - 1] == ["in"]:
-                landmark(rel, i)
-            out.relations.append(rel)
-            continue
-        if kind == "opposite":  # "across the table from the red chair": two landmarks, else one
-            rel = Relation(kind)
-            if landmark(rel, i):
-                frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
-                if frm is not None and landmark(rel, frm):
-                    i = last_landmark_end[0]
-            out.relations.append(rel)
-            continue
-        if kind in ("closest", "farthest"):
-            rel = Relation(kind)
-            anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
-            if anchor is None or not landmark(rel, anchor):
-                landmark(rel, i)
-            out.relations.append(rel)
-            continue
-        rel = Relation(kind)
-        if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
-            j = next_cat(i)
-            if j is not None and set(lemmas[cat_at[j].start:cat_at[j].end]) <= lex.words["weak_heads"]:
-                used.add(j)
-                continue
-        if kind in _LANDMARK_KINDS:
-            if not landmark(rel, i):
-                if _unknown_noun_after(lex, toks, lemmas, i, cat_at):
-                    out.unknown_landmark = True  # "above the ottoman-thing": a landmark we cannot read
-                continue  # "the one on top", "over there": nothing to relate to
-            if kind == "between":
-                landmark(rel, i)
-        out.relations.append(rel)
-    for k in negated:
-        if k < len(out.relations):
-            out.relations[k].negated = True
-    # the target is the first category left, unless it only says what the target is for
-    # ("the cloth for the glasses"): then there is no named target
-    target = next((j for j in sorted(cat_at) if j not in used), None)
-    if target is not None and target > 0 and toks[target - 1] == "for":
-        target = None
-    info = analyse_query(text)
-    if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
-        # a relation needs a target and a distinct landmark: when the only thing named was read as
-        # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
-        first = next((r for r in out.relations if taken.get(id(r))), None)
-        if first is not None:
-            target = taken[id(first)][0]
-            out.relations = [r for r in out.relations if r is not first]
-            if not any(taken.get(id(r)) for r in out.relations):
-                out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
-    if target is not None:
-        out.named = True
-        out.target = tuple(cat_at[target].values("cat"))
-        out.attrs = attrs_before(target)
-    elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves
-        out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
-    elif info.unknown_target:
-        out.unknown_target = True
-    # a size word on the target ("the small lamp on the side table") ranks within the relation
-    out.relations += [Relation("extreme", value=SIZE_EXTREMES[v]) for k, v in out.attrs
-                      if k == "size" and v in SIZE_EXTREMES and out.relations
-                      and not any(r.kind == "extreme" for r in out.relations)]
-    return out
+            return i
+        return self.landmark_relation(i, kind, nxt)
 
+    def ordinal_from(self, i: int, nxt: str) -> int:
+        """"from" after an ordinal ("the second from the left", "third from the door")."""
+        if self.pending_ordinal is None:
+            return i
+        if nxt in ("left", "right"):
+            self.pending_ordinal.value = nxt
+            return i + 1
+        if self.landmark(self.pending_ordinal, i):
+            self.pending_ordinal.value = "landmark"
+        return i
+
+    def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
+        """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
+        toks, out, rel = self.toks, self.out, Relation(kind)
+        if kind in ("left", "right", "front", "behind"):
+            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]):
+                self.landmark(rel, i)
+            out.relations.append(rel)
+            return i
+        if kind == "opposite":  # "across the table from the red chair": two landmarks, else one
+            if self.landmark(rel, i):
+                frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
+                if frm is not None and self.landmark(rel, frm):
+                    i = self.last_landmark_end
+            out.relations.append(rel)
+            return i
+        if kind in ("closest", "farthest"):
+            anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
+            if anchor is None or not self.landmark(rel, anchor):
+                self.landmark(rel, i)
+            out.relations.append(rel)
+            return i
+        if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
+            j = self.next_cat(i)
+            if j is not None and set(self.lemmas[self.cat_at[j].start:self.cat_at[j].end]) <= \
+                    self.lex.words["weak_heads"]:
+                self.used.add(j)
+                return i
+            if not self.landmark(rel, i):
+                if _unknown_noun_after(self.lex, toks, self.lemmas, i, self.cat_at):
+                    out.unknown_landmark = True  # "above the ottoman-thing": a landmark we cannot read
+                return i  # "the one on top", "over there": nothing to relate to
+            if kind == "between":
+                self.landmark(rel, i)
+        out.relations.append(rel)
+        return i
+
+    def target(self) -> SpatialQuery:
+        """The target is the first category left, unless it only says what the target is for
+        ("the cloth for the glasses"): then there is no named target."""
+        toks, out, taken = self.toks, self.out, self.taken
+        target = next((j for j in sorted(self.cat_at) if j not in self.used), None)
+        if target is not None and target > 0 and toks[target - 1] == "for":
+            target = None
+        info = analyse_query(self.text)
+        if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
+            # a relation needs a target and a distinct landmark: when the only thing named was read as
+            # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
+            first = next((r for r in out.relations if taken.get(id(r))), None)
+            if first is not None:
+                target = taken[id(first)][0]
+                out.relations = [r for r in out.relations if r is not first]
+                if not any(taken.get(id(r)) for r in out.relations):
+                    out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
+        if target is not None:
+            out.named = True
+            out.target = tuple(self.cat_at[target].values("cat"))
+            out.attrs = self.attrs_before(target)
+        elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves
+            out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
+        elif info.unknown_target:
+            out.unknown_target = True
+        # a size word on the target ("the small lamp on the side table") ranks within the relation
+        out.relations += [Relation("extreme", value=SIZE_EXTREMES[v]) for k, v in out.attrs
+                          if k == "size" and v in SIZE_EXTREMES and out.relations
+                          and not any(r.kind == "extreme" for r in out.relations)]
+        return out
+
+
+def parse_query(text: str) -> SpatialQuery:
+    """The spatial reading of `text` (no relations when it states none)."""
+    return _Reader(text).read()
 
 
 def _unknown_noun_after(lex, toks: list[str], lemmas: list[str], i: int, cat_at: dict) -> bool:
