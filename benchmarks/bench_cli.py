@@ -1,8 +1,9 @@
 """`iesm ask` cold start: wall time of a fresh process answering one query on the shipped map.
 
-Targets (DESIGN.md, issue 23): <= 1 s with the offline model on lexicons alone (IESM_EMBEDDINGS=0),
-and <= 1 s for an (o,d) query that needs the sentence encoder (onnxruntime over the ONNX export in
-the user cache; the encoder is only loaded when a query needs it). Each case runs once unmeasured
+Targets (DESIGN.md, issues 23 and 32): <= 3 s with the offline model on lexicons and the English
+parser (IESM_EMBEDDINGS=0; importing spaCy and loading its pipeline is most of it), and <= 3 s for an
+(o,d) query that needs the sentence encoder too (onnxruntime over the ONNX export in the user cache;
+the encoder is only loaded when a query needs it). Each case runs once unmeasured
 first, so the user cache holds the export and the vectors of the map's texts, as after any first use;
 the first use ever (export included) is measured apart, in an empty cache, and reported.
 
@@ -25,9 +26,9 @@ from results_io import record  # noqa: E402
 
 #: (name, IESM_EMBEDDINGS, query, target s or None, results.json key)
 CASES = [
-    ("lexicons only, (o) query", "0", "find the sofa", 1.0, "ask_cold_start_s"),
+    ("lexicons + parser, (o) query", "0", "find the sofa", 3.0, "ask_cold_start_s"),
     ("embeddings installed, (o) query", "1", "find the sofa", None, "ask_cold_start_embeddings_o_s"),
-    ("embeddings installed, (o,d) query", "1", "the yellow photo book", 1.0, "ask_cold_start_embeddings_od_s"),
+    ("embeddings installed, (o,d) query", "1", "the yellow photo book", 3.0, "ask_cold_start_embeddings_od_s"),
 ]
 
 
