@@ -204,7 +204,7 @@ def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
     import shutil
 
     from iesm_agent.evals.gt_queries import generate_gt_suite
-    from iesm_agent.evals.mapping import observed_masks
+    from iesm_agent.evals.observed import observed_masks
     from iesm_agent.evals.matching import match_instances
 
     frames = tmp_path / "frames"

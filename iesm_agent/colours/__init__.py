@@ -1,8 +1,8 @@
 """Colours, in one place: sRGB -> CIELAB, colour names and colour families.
 
-Pixels are converted to CIELAB (D65; L in 0-100; numpy, no OpenCV needed), the object's colour is a
+Pixels are converted to CIELAB (D65; L in 0-100; scikit-image's `skimage.color`), the object's colour is a
 lightness-robust median (see `masked_lab`), and its name is the nearest entry of the shipped
-XKCD colour-survey table (`colours.json`, CC0) under CIEDE2000. The family of a colour
+XKCD colour-survey table (`colours.json`, CC0) under CIEDE2000 (`skimage.color`). The family of a colour
 name ("reddish brown" -> brown) is the lexicon's canonical colour of its last colour word.
 """
 
@@ -21,13 +21,6 @@ LIGHTNESS_BAND = (50.0, 90.0)
 SHADING = np.linspace(0.5, 1.0, 11)
 #: CIEDE2000 units charged per unit of shading assumed (1 - s): at equal fit, less shading wins
 SHADING_COST = 8.0
-
-
-#: linear sRGB -> CIE XYZ (D65), and the D65 reference white
-_RGB_TO_XYZ = np.array([[0.412453, 0.357580, 0.180423], [0.212671, 0.715160, 0.072169],
-                        [0.019334, 0.119193, 0.950227]])
-_D65_WHITE = np.array([0.950456, 1.0, 1.088754])
-_LAB_EPSILON = (6 / 29) ** 3
 
 
 @dataclass(frozen=True)
@@ -49,14 +42,12 @@ def _shade(rgb: np.ndarray, factor: float) -> np.ndarray:
 
 
 def rgb_to_lab(rgb: np.ndarray) -> np.ndarray:
-    """(..., 3) sRGB uint8 (or floats in 0-255) -> (..., 3) float64 CIELAB."""
+    """(..., 3) sRGB uint8 (or floats in 0-255) -> (..., 3) float64 CIELAB (D65, 2-degree
+    observer; `skimage.color.rgb2lab`)."""
+    from skimage.color import rgb2lab
+
     arr = np.asarray(rgb, np.float64)
-    c = arr.reshape(-1, 3) / 255.0
-    c = np.where(c > 0.04045, ((c + 0.055) / 1.055) ** 2.4, c / 12.92)
-    xyz = c @ _RGB_TO_XYZ.T / _D65_WHITE
-    f = np.where(xyz > _LAB_EPSILON, np.cbrt(xyz), xyz / (3 * (6 / 29) ** 2) + 4 / 29)
-    lab = np.stack([116 * f[:, 1] - 16, 500 * (f[:, 0] - f[:, 1]), 200 * (f[:, 1] - f[:, 2])], axis=1)
-    return lab.reshape(arr.shape)
+    return rgb2lab(arr.reshape(-1, 1, 3) / 255.0).reshape(arr.shape)
 
 
 @lru_cache(maxsize=1)
@@ -70,34 +61,12 @@ def colour_table() -> ColourTable:
 
 
 def ciede2000(lab1: np.ndarray, lab2: np.ndarray) -> np.ndarray:
-    """CIEDE2000 colour difference (kL = kC = kH = 1) between broadcastable (..., 3) Lab arrays."""
-    lab1, lab2 = np.asarray(lab1, np.float64), np.asarray(lab2, np.float64)
-    l1, a1, b1 = lab1[..., 0], lab1[..., 1], lab1[..., 2]
-    l2, a2, b2 = lab2[..., 0], lab2[..., 1], lab2[..., 2]
-    c_bar = (np.hypot(a1, b1) + np.hypot(a2, b2)) / 2
-    g = 0.5 * (1 - np.sqrt(c_bar ** 7 / (c_bar ** 7 + 25.0 ** 7)))
-    a1p, a2p = (1 + g) * a1, (1 + g) * a2
-    c1p, c2p = np.hypot(a1p, b1), np.hypot(a2p, b2)
-    h1p = np.degrees(np.arctan2(b1, a1p)) % 360
-    h2p = np.degrees(np.arctan2(b2, a2p)) % 360
-    dlp, dcp = l2 - l1, c2p - c1p
-    dh = h2p - h1p
-    dh = np.where(dh > 180, dh - 360, np.where(dh < -180, dh + 360, dh))
-    dh = np.where(c1p * c2p == 0, 0.0, dh)
-    dhp = 2 * np.sqrt(c1p * c2p) * np.sin(np.radians(dh / 2))
-    l_bar, c_bar_p = (l1 + l2) / 2, (c1p + c2p) / 2
-    h_sum = h1p + h2p
-    h_bar = np.where(np.abs(h1p - h2p) > 180, np.where(h_sum < 360, h_sum + 360, h_sum - 360), h_sum) / 2
-    h_bar = np.where(c1p * c2p == 0, h_sum, h_bar)
-    t = (1 - 0.17 * np.cos(np.radians(h_bar - 30)) + 0.24 * np.cos(np.radians(2 * h_bar))
-         + 0.32 * np.cos(np.radians(3 * h_bar + 6)) - 0.20 * np.cos(np.radians(4 * h_bar - 63)))
-    d_theta = 30 * np.exp(-(((h_bar - 275) / 25) ** 2))
-    r_c = 2 * np.sqrt(c_bar_p ** 7 / (c_bar_p ** 7 + 25.0 ** 7))
-    s_l = 1 + 0.015 * (l_bar - 50) ** 2 / np.sqrt(20 + (l_bar - 50) ** 2)
-    s_c = 1 + 0.045 * c_bar_p
-    s_h = 1 + 0.015 * c_bar_p * t
-    r_t = -np.sin(np.radians(2 * d_theta)) * r_c
-    return np.sqrt((dlp / s_l) ** 2 + (dcp / s_c) ** 2 + (dhp / s_h) ** 2 + r_t * (dcp / s_c) * (dhp / s_h))
+    """CIEDE2000 colour difference (kL = kC = kH = 1) between broadcastable (..., 3) Lab arrays
+    (`skimage.color.deltaE_ciede2000`)."""
+    from skimage.color import deltaE_ciede2000
+
+    lab1, lab2 = np.broadcast_arrays(np.asarray(lab1, np.float64), np.asarray(lab2, np.float64))
+    return deltaE_ciede2000(lab1, lab2, channel_axis=-1)
 
 
 def name_lab(lab: np.ndarray, shading: bool = True) -> np.ndarray:
