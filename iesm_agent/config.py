@@ -29,7 +29,13 @@ class MappingConfig(BaseModel):
     `cell_size` top-down grid cell (m); `min_mask_pixels` masks with fewer pixels that have depth
     are dropped; `max_depth` (m) farther readings are ignored; `match_iou` the top-down mask IoU
     above which evaluation pairs a predicted with a ground-truth instance; `small_fraction` the
-    share of instances (smallest top-down area) whose categories count as small objects."""
+    share of instances (smallest top-down area) whose categories count as small objects.
+    Geometry cleaning before projection (`mapping.clean`; not in the paper, `paper()` and
+    `uncleaned()` turn it off): `mask_erode_px` pixels eroded from each mask's border,
+    `depth_edge_jump` (relative, None = off) pixels next to a larger depth jump dropped,
+    `outlier_sigmas` (None = off) / `outlier_floor` (m) a mask's pixels farther from its median
+    depth than max(outlier_sigmas robust sigmas, outlier_floor) dropped, `min_cell_points` a
+    candidate's top-down cells with fewer points dropped."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -46,11 +52,24 @@ class MappingConfig(BaseModel):
     max_depth: float = Field(10.0, gt=0)
     match_iou: float = Field(0.5, ge=0, lt=1)
     small_fraction: float = Field(0.2, gt=0, le=1)
+    # geometry cleaning before projection (mapping/clean.py; not in the paper)
+    mask_erode_px: int = Field(0, ge=0)
+    depth_edge_jump: Optional[float] = Field(None, gt=0)
+    outlier_sigmas: Optional[float] = Field(None, gt=0)
+    outlier_floor: float = Field(0.0, ge=0)
+    min_cell_points: int = Field(1, ge=1)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
-        """The paper's association alone (both thresholds on every pair, no strong-overlap link)."""
-        return cls(**{"delta_geo_strong": None, "continuity_gap": None, **values})
+        """The paper's association alone (both thresholds on every pair, no strong-overlap link,
+        no continuity merge) on uncleaned geometry."""
+        return cls.uncleaned(**{"delta_geo_strong": None, "continuity_gap": None, **values})
+
+    @classmethod
+    def uncleaned(cls, **values: Any) -> "MappingConfig":
+        """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
+        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "outlier_sigmas": None, "outlier_floor": 0.0,
+                      "min_cell_points": 1, **values})
 
 
 class RetrievalConfig(BaseModel):
