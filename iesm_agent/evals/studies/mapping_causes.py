@@ -22,7 +22,7 @@ from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
 from . import log_stderr, scene_frames, study_command, study_main, write_table
 from ..mapping import EvalContext, prediction_from_map, score
-from ..mapping_causes import CAUSES, cause_counts, segmented_ids, unmatched_causes
+from ..mapping_causes import CAUSES, cause_counts, mask_objects, unmatched_causes
 
 #: the configurations compared: name -> (title, factory)
 VARIANTS: dict[str, tuple[str, Callable[[], MappingConfig]]] = {
@@ -33,13 +33,13 @@ VARIANTS: dict[str, tuple[str, Callable[[], MappingConfig]]] = {
 
 
 def study_scene(frames_dir: Path) -> dict:
-    """{variant: {"n_gt", "n_pred", "n_matched", "causes": {cause: n}, "inflation": median
-    instance / object area of the inflated}} on one frame directory."""
+    """{variant: {"n_gt", "n_pred", "n_matched", "instance_diff", "auc_match", "causes": {cause: n}}}
+    on one frame directory."""
     frames = FrameSet.open(frames_dir)
     categories, e = category_vectors(frames)
     gt = GroundTruth.load(frames_dir)
     out: dict = {}
-    segmented: Optional[set[int]] = None
+    shows: Optional[dict[tuple[int, int], int]] = None
     for name, (_title, make) in VARIANTS.items():
         cfg = make().model_copy(update={"cell_size": frames.meta.cell_size})
         builder = MapBuilder(frames.intrinsics, cfg)
@@ -50,9 +50,10 @@ def study_scene(frames_dir: Path) -> dict:
         ctx = EvalContext.create(gt, frames_dir, cfg)
         pred = prediction_from_map(scene, ctx)
         result = score(pred, ctx)
-        if segmented is None:
-            segmented = segmented_ids(frames, cfg.min_mask_pixels)
-        causes = unmatched_causes(pred.cells[:2], ctx.gt_cells[:2], ctx.gt_ids, set(result["matched_ids"]), segmented)
+        if shows is None:
+            shows = mask_objects(frames, cfg.min_mask_pixels)
+        causes = unmatched_causes(pred.cells[:2], ctx.gt_cells[:2], ctx.gt_ids, set(result["matched_ids"]),
+                                  scene.observations, shows)
         out[name] = {"n_gt": result["n_gt"], "n_pred": result["n_pred"], "n_matched": result["n_matched"],
                      "instance_diff": result["instance_diff"], "auc_match": result["auc_top"]["match"],
                      "causes": cause_counts(causes)}
@@ -64,10 +65,11 @@ def table_markdown(per_scene: dict[str, dict], realism: str, seeds_arg: str) -> 
     lines = [f"Profile `{realism}`; seeds {seeds_arg}; mean per scene over {len(rows)} simulated scenes "
              f"({', '.join(per_scene)}). Every evaluated ground-truth object (seen in at least "
              "`min_mask_pixels` pixels) that no instance matches (top-down IoU > 0.5 against the observed "
-             "footprint) gets one cause (evals/mapping_causes.py): never segmented (no frame's mask is mostly "
-             "it), swallowed (an instance covering half of it or more is mostly another object), inflated (one "
-             "covering half of it or more is mostly it but too large for IoU > 0.5), split (its own pieces "
-             "cover half of it together, none alone), partial (the map holds under half of it).", "",
+             "footprint) gets one cause (evals/mapping_causes.py; an instance is an object's own when most of "
+             "its masks show that object): never segmented (no mask showing mostly it reached the map), "
+             "swallowed (most of its masks went into other objects' instances), split (its masks went into "
+             "two or more own instances, none covering half of it), inflated (an own instance covers half of "
+             "it or more but is too large for IoU > 0.5), partial (its own instances cover under half of it).", "",
              "| configuration | seen objects | predicted | matched | " + " | ".join(CAUSES) + " | AUC match |",
              "|---|" + "---:|" * (len(CAUSES) + 4)]
     for name, (title, _make) in VARIANTS.items():
