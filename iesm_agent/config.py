@@ -37,8 +37,7 @@ class MappingConfig(BaseModel):
     `depth_edge_jump` (relative, None = off) pixels next to a larger depth jump dropped,
     `outlier_sigmas` (None = off) / `outlier_floor` (m) a mask's pixels farther from its median
     depth than max(outlier_sigmas robust sigmas, outlier_floor) dropped, `min_cell_points` a
-    candidate's top-down cells with fewer points dropped; `min_cell_views` a built instance's
-    cells seen by fewer of its observations left out of its footprint (`mapping.scene.supported_cells`)."""
+    candidate's top-down cells with fewer points dropped."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -62,7 +61,6 @@ class MappingConfig(BaseModel):
     outlier_sigmas: Optional[float] = Field(None, gt=0)
     outlier_floor: float = Field(0.0, ge=0)
     min_cell_points: int = Field(1, ge=1)
-    min_cell_views: int = Field(1, ge=1)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -74,7 +72,7 @@ class MappingConfig(BaseModel):
     def uncleaned(cls, **values: Any) -> "MappingConfig":
         """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "outlier_sigmas": None, "outlier_floor": 0.0,
-                      "min_cell_points": 1, "min_cell_views": 1, **values})
+                      "min_cell_points": 1, **values})
 
 
 class RetrievalConfig(BaseModel):

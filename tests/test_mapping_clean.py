@@ -67,11 +67,3 @@ def test_paper_and_uncleaned_turn_cleaning_off():
         assert cfg.mask_erode_px == 0 and cfg.depth_edge_jump is None and cfg.outlier_sigmas is None
         assert cfg.min_cell_points == 1
     assert MappingConfig.paper().delta_geo_strong is None
-
-
-def test_supported_cells_drop_stray_cells_but_keep_an_instance_seen_once():
-    from iesm_agent.mapping.scene import supported_cells
-
-    assert supported_cells(np.array([5, 4, 1, 2]), 2).tolist() == [True, True, False, True]
-    assert supported_cells(np.array([1, 1, 1]), 3).tolist() == [True, True, True]
-    assert supported_cells(np.array([1, 2, 1]), 1).all() and len(supported_cells(np.zeros(0, np.int64), 2)) == 0

@@ -61,7 +61,7 @@ class MapBuilder:
                 "instances_first_pass": str(before), "second_pass_merges": str(merges),
                 "continuity_merges": str(continuous)}
         return to_scene_map(d, categories, category_embeddings, cell_size=self.cfg.cell_size, scene_id=scene_id,
-                            embedding_space=embedding_space, meta=meta, min_cell_views=self.cfg.min_cell_views)
+                            embedding_space=embedding_space, meta=meta)
 
 
 def category_vectors(frames: FrameSet) -> tuple[list[str], np.ndarray | None]:

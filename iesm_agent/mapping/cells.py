@@ -52,19 +52,15 @@ def group_ids(values: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray, np
     return distinct, inverse.reshape(-1), counts
 
 
-def union_max(keys_a: np.ndarray, top_a: np.ndarray, hits_a: np.ndarray, keys_b: np.ndarray, top_b: np.ndarray,
-              hits_b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Mask OR of two sparse masks; a cell in both keeps the larger top height (m) and the sum of
-    the two hit counts (observations that saw the cell, int64)."""
+def union_max(keys_a: np.ndarray, top_a: np.ndarray, keys_b: np.ndarray,
+              top_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Mask OR of two sparse masks; a cell in both keeps the larger top height (m)."""
     keys = np.concatenate([keys_a, keys_b])
     tops = np.concatenate([top_a, top_b])
-    hits = np.concatenate([hits_a, hits_b]).astype(np.int64)
     order = np.argsort(keys, kind="stable")
-    keys, tops, hits = keys[order], tops[order], hits[order]
+    keys, tops = keys[order], tops[order]
     starts = run_starts(keys)
-    if not len(keys):
-        return keys, tops, hits
-    return keys[starts], np.maximum.reduceat(tops, starts), np.add.reduceat(hits, starts)
+    return keys[starts], np.maximum.reduceat(tops, starts) if len(keys) else tops
 
 
 def intersections(keys_a: np.ndarray, owner_a: np.ndarray, keys_b: np.ndarray,

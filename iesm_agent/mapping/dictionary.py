@@ -2,8 +2,7 @@
 association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion") and the
 continuity merge of touching stretches of one object (not in the paper, `merge_continuous`).
 
-Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height
-and hit count (how many fused observations saw the cell),
+Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
 the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
 the same way), the weight w (number of fused observations) and its observations
 (frame index, mask index, mask area in pixels, mask score).
@@ -32,7 +31,6 @@ class InstanceDictionary:
         self.cfg = cfg
         self.keys: list[np.ndarray] = []          # per entry: sorted cell keys
         self.tops: list[np.ndarray] = []          # per entry: top height (m) of each cell
-        self.hits: list[np.ndarray] = []          # per entry: observations that saw each cell (int64)
         self.observations: list[list[tuple[int, int, int, float]]] = []
         self._f = np.zeros((16, dim))             # embeddings
         self._w = np.zeros(16)                    # weights
@@ -61,9 +59,8 @@ class InstanceDictionary:
         return self._size[:len(self)]
 
     def add(self, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-            bbox: np.ndarray, observations: list, band: np.ndarray | None = None,
-            hits: np.ndarray | None = None) -> int:
-        """Append a new entry (`band` None: unknown; `hits` None: every cell seen once); returns its index."""
+            bbox: np.ndarray, observations: list, band: np.ndarray) -> int:
+        """Append a new entry; returns its index."""
         n = len(self)
         if n == len(self._w):
             grow = 2 * n
@@ -73,28 +70,24 @@ class InstanceDictionary:
             self._band = np.resize(self._band, (grow, 2))
         self.keys.append(keys)
         self.tops.append(top)
-        self.hits.append(np.ones(len(keys), np.int64) if hits is None else hits)
         self.observations.append(list(observations))
         self._f[n], self._w[n], self._h[n], self._size[n], self._bbox[n] = f, weight, height, len(keys), bbox
-        self._band[n] = np.nan if band is None else band
+        self._band[n] = band
         return n
 
     def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-             bbox: np.ndarray, observations: list, band: np.ndarray | None = None,
-             hits: np.ndarray | None = None) -> None:
+             bbox: np.ndarray, observations: list, band: np.ndarray) -> None:
         """Fuse an observation (or a whole entry) of weight `weight` into entry `i` (height bands:
         their union)."""
         w = self._w[i]
-        hits = np.ones(len(keys), np.int64) if hits is None else hits
-        self.keys[i], self.tops[i], self.hits[i] = union_max(self.keys[i], self.tops[i], self.hits[i], keys, top, hits)
+        self.keys[i], self.tops[i] = union_max(self.keys[i], self.tops[i], keys, top)
         self._f[i] = (w * self._f[i] + weight * np.asarray(f)) / (w + weight)
         self._h[i] = (w * self._h[i] + weight * height) / (w + weight)
         self._w[i] = w + weight
         self._size[i] = len(self.keys[i])
         box = self._bbox[i]
         self._bbox[i] = (min(box[0], bbox[0]), max(box[1], bbox[1]), min(box[2], bbox[2]), max(box[3], bbox[3]))
-        if band is not None:
-            self._band[i] = (np.fmin(self._band[i, 0], band[0]), np.fmax(self._band[i, 1], band[1]))
+        self._band[i] = (np.fmin(self._band[i, 0], band[0]), np.fmax(self._band[i, 1], band[1]))
         self.observations[i].extend(observations)
 
     def compare(self, keys: np.ndarray, owners: np.ndarray, areas: np.ndarray, bboxes: np.ndarray,
@@ -155,7 +148,7 @@ class InstanceDictionary:
         for i in np.argsort(-self.weights, kind="stable"):
             m = link(self, out, i)
             args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i],
-                    self._band[i], self.hits[i])
+                    self._band[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1

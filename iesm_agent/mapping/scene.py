@@ -41,28 +41,16 @@ def frames_by_area(observations: list[tuple[int, int, int, float]]) -> list[int]
     return sorted(best, key=lambda fr: (-best[fr], fr))
 
 
-def supported_cells(hits: np.ndarray, min_views: int) -> np.ndarray:
-    """(n,) bool: the cells of one instance with at least min(`min_views`, its largest hit count)
-    hits, so cells one stray view put there go while an instance seen once keeps every cell."""
-    if len(hits) == 0:
-        return np.zeros(0, bool)
-    return hits >= min(min_views, int(hits.max()))
-
-
 def to_scene_map(d: InstanceDictionary, categories: list[str], category_embeddings: np.ndarray, *,
-                 cell_size: float, scene_id: str, embedding_space: str, meta: dict[str, str],
-                 min_cell_views: int = 1) -> SceneMap:
-    """The built `SceneMap` of dictionary `d` (entry i becomes instance id i + 1); each footprint
-    keeps its `supported_cells` (`min_cell_views` 1: every cell)."""
-    keep = [supported_cells(h, min_cell_views) for h in d.hits]
-    keys = [k[m] for k, m in zip(d.keys, keep)]
-    grid = grid_around(np.concatenate(keys) if len(d) else np.zeros(0, np.int64), cell_size)
+                 cell_size: float, scene_id: str, embedding_space: str, meta: dict[str, str]) -> SceneMap:
+    """The built `SceneMap` of dictionary `d` (entry i becomes instance id i + 1)."""
+    grid = grid_around(np.concatenate(d.keys) if len(d) else np.zeros(0, np.int64), cell_size)
     labels = categorize(d.embeddings, category_embeddings, categories) if len(d) else []
     instances, cells, ids, tops, obs_rows = [], [], [], [], []
     for i in range(len(d)):
         iid = i + 1
-        flat = flat_cells(keys[i], grid)
-        rows, cols = rowcol_of(keys[i])
+        flat = flat_cells(d.keys[i], grid)
+        rows, cols = rowcol_of(d.keys[i])
         label, alt = labels[i]
         instances.append(Instance(
             id=iid, label=label, alt_labels=alt, mean_height=float(d.mean_heights[i]), weight=float(d.weights[i]),
@@ -72,7 +60,7 @@ def to_scene_map(d: InstanceDictionary, categories: list[str], category_embeddin
             footprint_cells=int(len(flat))))
         cells.append(flat)
         ids.append(np.full(len(flat), iid, np.int64))
-        tops.append(d.tops[i][keep[i]])
+        tops.append(d.tops[i])
         obs_rows += [(iid, *row) for row in d.observations[i]]
     occupancy = (InstanceGrid.from_entries(np.concatenate(cells), np.concatenate(ids), np.concatenate(tops))
                  if instances else InstanceGrid.empty())
