@@ -19,9 +19,7 @@ class MappingConfig(BaseModel):
     `delta_geo_strong` (max-overlap, 0-1, None = off) and `delta_sem_weak` (cosine): a pair whose
     top-down masks overlap more than `delta_geo_strong` also links when its cosine exceeds
     `delta_sem_weak` (not in the paper; on by default at 0.7 / 0.6, set on tuning seeds 0-4, see
-    docs/results.md; `paper()` turns it off); `delta_band` (0-1, None = off): that weak link also
-    needs the pair's height bands (lowest to highest point) to overlap by at least this share of
-    the span they cover together, so an object on a support or in a wall stays its own instance; `continuity_gap` (m, None = off) and
+    docs/results.md; `paper()` turns it off); `continuity_gap` (m, None = off) and
     `delta_sem_continuous` (cosine): after association, entries whose top-down masks touch (cells
     at most `continuity_gap` apart), whose cosine exceeds `delta_sem_continuous` and whose shapes
     continue each other (`mapping.association.continues`: collinear planar stretches, or a planar and
@@ -47,7 +45,6 @@ class MappingConfig(BaseModel):
     w_sem: float = 0.3
     delta_geo_strong: Optional[float] = Field(0.7, gt=0, le=1)
     delta_sem_weak: float = Field(0.6, ge=-1, le=1)
-    delta_band: Optional[float] = Field(None, ge=0, le=1)
     continuity_gap: Optional[float] = Field(0.0, ge=0)
     delta_sem_continuous: float = Field(0.7, ge=-1, le=1)
     cell_size: float = Field(0.05, gt=0)
@@ -66,7 +63,7 @@ class MappingConfig(BaseModel):
     def paper(cls, **values: Any) -> "MappingConfig":
         """The paper's association alone (both thresholds on every pair, no strong-overlap link,
         no continuity merge) on uncleaned geometry."""
-        return cls.uncleaned(**{"delta_geo_strong": None, "delta_band": None, "continuity_gap": None, **values})
+        return cls.uncleaned(**{"delta_geo_strong": None, "continuity_gap": None, **values})
 
     @classmethod
     def uncleaned(cls, **values: Any) -> "MappingConfig":

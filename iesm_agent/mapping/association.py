@@ -48,41 +48,25 @@ def phi_sem(f_a: np.ndarray, f_b: np.ndarray) -> np.ndarray:
     return np.einsum("nd,nd->n", unit_rows(f_a), unit_rows(f_b))
 
 
-def band_overlap(band_a: np.ndarray, band_b: np.ndarray) -> np.ndarray:
-    """Overlap of height bands, elementwise over (n, 2) (low, high) m rows: the length they share
-    over the length they span together (0-1); 1 where either band is unknown (NaN)."""
-    a, b = np.asarray(band_a, np.float64), np.asarray(band_b, np.float64)
-    shared = np.minimum(a[:, 1], b[:, 1]) - np.maximum(a[:, 0], b[:, 0])
-    span = np.maximum(a[:, 1], b[:, 1]) - np.minimum(a[:, 0], b[:, 0])
-    out = np.clip(shared, 0, None) / np.maximum(span, 1e-6)
-    return np.where(np.isnan(out), 1.0, out)
-
-
-def linkable(geo: np.ndarray, sem: np.ndarray, cfg: MappingConfig, band: np.ndarray | None = None) -> np.ndarray:
+def linkable(geo: np.ndarray, sem: np.ndarray, cfg: MappingConfig) -> np.ndarray:
     """Which (candidate, instance) pairs may be fused, elementwise over phi_geo `geo` (max-overlap,
     0-1) and phi_sem `sem` (cosine, -1-1): both paper thresholds passed, or (when
-    `cfg.delta_geo_strong` is set) phi_geo > delta_geo_strong and phi_sem > delta_sem_weak and,
-    when `cfg.delta_band` is set and `band` (`band_overlap`, 0-1) given, band >= delta_band: a cup
-    on a table or a window in a wall shares the footprint but not the heights."""
+    `cfg.delta_geo_strong` is set) phi_geo > delta_geo_strong and phi_sem > delta_sem_weak."""
     ok = (geo > cfg.delta_geo) & (sem > cfg.delta_sem)
     if cfg.delta_geo_strong is not None:
-        weak = (geo > cfg.delta_geo_strong) & (sem > cfg.delta_sem_weak)
-        if cfg.delta_band is not None and band is not None:
-            weak &= band >= cfg.delta_band
-        ok |= weak
+        ok |= (geo > cfg.delta_geo_strong) & (sem > cfg.delta_sem_weak)
     return ok
 
 
 def select_matches(pair_a: np.ndarray, pair_b: np.ndarray, geo: np.ndarray, sem: np.ndarray,
-                   n_candidates: int, cfg: MappingConfig, band: np.ndarray | None = None) -> np.ndarray:
+                   n_candidates: int, cfg: MappingConfig) -> np.ndarray:
     """For each candidate 0..n_candidates-1, the instance it is fused into, or -1.
 
-    Inputs are parallel arrays over the (candidate, instance) pairs that were compared (`band`:
-    their height-band overlaps, optional). Among a candidate's `linkable` pairs the largest phi
-    wins; ties go to the lower instance index.
+    Inputs are parallel arrays over the (candidate, instance) pairs that were compared. Among a
+    candidate's `linkable` pairs the largest phi wins; ties go to the lower instance index.
     """
     match = np.full(n_candidates, -1, np.int64)
-    ok = linkable(geo, sem, cfg, band)
+    ok = linkable(geo, sem, cfg)
     if not ok.any():
         return match
     a, b = np.asarray(pair_a)[ok], np.asarray(pair_b)[ok]

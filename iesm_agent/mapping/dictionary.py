@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..config import MappingConfig
-from .association import band_overlap, continuous_link, phi_geo, phi_sem, select_matches
+from .association import continuous_link, phi_geo, phi_sem, select_matches
 from .cells import dilate, intersections, union_max
 from .project import TopDownCandidates
 
@@ -37,7 +37,6 @@ class InstanceDictionary:
         self._h = np.zeros(16)                    # mean heights, m
         self._size = np.zeros(16, np.int64)       # cells per mask
         self._bbox = np.zeros((16, 4), np.int64)  # global (row_min, row_max, col_min, col_max)
-        self._band = np.full((16, 2), np.nan)     # (lowest, highest) point height, m; NaN unknown
 
     def __len__(self) -> int:
         return len(self.keys)
@@ -59,7 +58,7 @@ class InstanceDictionary:
         return self._size[:len(self)]
 
     def add(self, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-            bbox: np.ndarray, observations: list, band: np.ndarray) -> int:
+            bbox: np.ndarray, observations: list) -> int:
         """Append a new entry; returns its index."""
         n = len(self)
         if n == len(self._w):
@@ -67,18 +66,15 @@ class InstanceDictionary:
             self._f = np.resize(self._f, (grow, self._f.shape[1]))
             self._w, self._h, self._size = np.resize(self._w, grow), np.resize(self._h, grow), np.resize(self._size, grow)
             self._bbox = np.resize(self._bbox, (grow, 4))
-            self._band = np.resize(self._band, (grow, 2))
         self.keys.append(keys)
         self.tops.append(top)
         self.observations.append(list(observations))
         self._f[n], self._w[n], self._h[n], self._size[n], self._bbox[n] = f, weight, height, len(keys), bbox
-        self._band[n] = band
         return n
 
     def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-             bbox: np.ndarray, observations: list, band: np.ndarray) -> None:
-        """Fuse an observation (or a whole entry) of weight `weight` into entry `i` (height bands:
-        their union)."""
+             bbox: np.ndarray, observations: list) -> None:
+        """Fuse an observation (or a whole entry) of weight `weight` into entry `i`."""
         w = self._w[i]
         self.keys[i], self.tops[i] = union_max(self.keys[i], self.tops[i], keys, top)
         self._f[i] = (w * self._f[i] + weight * np.asarray(f)) / (w + weight)
@@ -87,34 +83,29 @@ class InstanceDictionary:
         self._size[i] = len(self.keys[i])
         box = self._bbox[i]
         self._bbox[i] = (min(box[0], bbox[0]), max(box[1], bbox[1]), min(box[2], bbox[2]), max(box[3], bbox[3]))
-        self._band[i] = (np.fmin(self._band[i, 0], band[0]), np.fmax(self._band[i, 1], band[1]))
         self.observations[i].extend(observations)
 
     def compare(self, keys: np.ndarray, owners: np.ndarray, areas: np.ndarray, bboxes: np.ndarray,
-                f: np.ndarray, bands: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """phi_geo, phi_sem and the height-band overlap of every (mask, entry) pair whose masks
-        share a cell.
+                f: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """phi_geo and phi_sem of every (mask, entry) pair whose masks share a cell.
 
         The masks to compare are given by their cells (`keys`, `owners` = mask index), `areas`
-        (cells), `bboxes` (M, 4), embeddings `f` (M, D) and height bands `bands` (M, 2) m.
-        Entries whose bounding box misses every mask's box are skipped before any cell is touched.
-        Returns (mask, entry, geo, sem, band).
+        (cells), `bboxes` (M, 4) and embeddings `f` (M, D). Entries whose bounding box misses
+        every mask's box are skipped before any cell is touched. Returns (mask, entry, geo, sem).
         """
         n = len(self)
-        none = _EMPTY, _EMPTY, np.zeros(0), np.zeros(0), np.zeros(0)
         if n == 0 or len(keys) == 0:
-            return none
+            return _EMPTY, _EMPTY, np.zeros(0), np.zeros(0)
         box = self._bbox[:n]
         near = ((bboxes[:, None, 0] <= box[None, :, 1]) & (bboxes[:, None, 1] >= box[None, :, 0])
                 & (bboxes[:, None, 2] <= box[None, :, 3]) & (bboxes[:, None, 3] >= box[None, :, 2])).any(axis=0)
         near = np.flatnonzero(near)
         if len(near) == 0:
-            return none
+            return _EMPTY, _EMPTY, np.zeros(0), np.zeros(0)
         entry_keys = np.concatenate([self.keys[e] for e in near])
         entry_owner = np.repeat(near, self._size[near])
         a, e, inter = intersections(keys, owners, entry_keys, entry_owner)
-        return (a, e, phi_geo(inter, areas[a], self._size[e]), phi_sem(f[a], self._f[e]),
-                band_overlap(bands[a], self._band[e]))
+        return a, e, phi_geo(inter, areas[a], self._size[e]), phi_sem(f[a], self._f[e])
 
     def integrate(self, cands: TopDownCandidates, embeddings: np.ndarray, scores: np.ndarray,
                   frame_index: int) -> np.ndarray:
@@ -123,15 +114,14 @@ class InstanceDictionary:
         by mask index. Returns the entry index each candidate went to (A,)."""
         f = np.asarray(embeddings, np.float64)[cands.mask_index]
         areas = np.diff(cands.offsets)
-        bands = cands.band if cands.band is not None else np.full((len(cands), 2), np.nan)
-        a, e, geo, sem, band = self.compare(cands.keys, cands.owners(), areas, cands.bbox, f, bands)
-        match = select_matches(a, e, geo, sem, len(cands), self.cfg, band)
+        a, e, geo, sem = self.compare(cands.keys, cands.owners(), areas, cands.bbox, f)
+        match = select_matches(a, e, geo, sem, len(cands), self.cfg)
         target = np.empty(len(cands), np.int64)
         for c in range(len(cands)):
             keys, top = cands.cells(c)
             obs = [(frame_index, int(cands.mask_index[c]), int(cands.area_px[c]),
                     float(scores[cands.mask_index[c]]))]
-            args = (keys, top, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs, bands[c])
+            args = (keys, top, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
             if match[c] >= 0:
                 self.fuse(int(match[c]), *args)
                 target[c] = match[c]
@@ -147,8 +137,7 @@ class InstanceDictionary:
         merges = 0
         for i in np.argsort(-self.weights, kind="stable"):
             m = link(self, out, i)
-            args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i],
-                    self._band[i])
+            args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1
@@ -162,9 +151,9 @@ class InstanceDictionary:
         new dictionary and the number of merges."""
         def link(src: InstanceDictionary, out: InstanceDictionary, i: int) -> int:
             keys = src.keys[i]
-            a, e, geo, sem, band = out.compare(keys, np.zeros(len(keys), np.int64), src._size[i:i + 1],
-                                               src._bbox[i:i + 1], src._f[i:i + 1], src._band[i:i + 1])
-            return int(select_matches(a, e, geo, sem, 1, self.cfg, band)[0])
+            a, e, geo, sem = out.compare(keys, np.zeros(len(keys), np.int64), src._size[i:i + 1],
+                                         src._bbox[i:i + 1], src._f[i:i + 1])
+            return int(select_matches(a, e, geo, sem, 1, self.cfg)[0])
 
         return self._regroup(link)
 
@@ -179,8 +168,8 @@ class InstanceDictionary:
         def link(src: InstanceDictionary, out: InstanceDictionary, i: int) -> int:
             near = dilate(src.keys[i], radius)
             box = src._bbox[i:i + 1] + np.array([-radius, radius, -radius, radius])
-            _a, e, _geo, sem, _band = out.compare(near, np.zeros(len(near), np.int64), np.array([len(near)]), box,
-                                                  src._f[i:i + 1], src._band[i:i + 1])
+            _a, e, _geo, sem = out.compare(near, np.zeros(len(near), np.int64), np.array([len(near)]), box,
+                                           src._f[i:i + 1])
             return continuous_link(src.keys[i], e, sem, out.keys, self.cfg)
 
         d, total = self, 0

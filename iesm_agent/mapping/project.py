@@ -23,8 +23,7 @@ class TopDownCandidates:
     `offsets` (A + 1,): candidate a owns `keys[offsets[a]:offsets[a + 1]]` (sorted cell keys, see
     `cells`) and the matching `top` (per-cell highest point, m); `mean_height` (A,) m, the mean
     over the candidate's cells of the per-cell mean point height; `area_px` (A,) mask pixels;
-    `bbox` (A, 4) int64 global (row_min, row_max, col_min, col_max); `band` (A, 2) float64 the
-    lowest and highest point height (m) over the candidate's cells (None: unknown).
+    `bbox` (A, 4) int64 global (row_min, row_max, col_min, col_max).
     """
 
     mask_index: np.ndarray
@@ -34,7 +33,6 @@ class TopDownCandidates:
     mean_height: np.ndarray
     area_px: np.ndarray
     bbox: np.ndarray
-    band: np.ndarray | None = None
 
     def __len__(self) -> int:
         return len(self.mask_index)
@@ -205,8 +203,6 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     sums = np.bincount(inverse, weights=z, minlength=len(groups))        # float64
     top = np.full(len(groups), -np.inf, np.float32)
     np.maximum.at(top, inverse, z)
-    bottom = np.full(len(groups), np.inf, np.float32)
-    np.minimum.at(bottom, inverse, z)
     group_k, group_cell = np.divmod(groups, n)
     has_depth = group_cell < img.n_box
     usable_px = np.bincount(group_k[has_depth], weights=n_pts[has_depth], minlength=k_all)
@@ -215,7 +211,7 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     # one entry per (candidate, cell): candidate-major, cells row-major inside each candidate
     sel = np.flatnonzero(supported & keep[group_k])
     cell_k, box = group_k[sel], group_cell[sel]
-    top, bottom = top[sel], bottom[sel]
+    top = top[sel]
     cell_mean = sums[sel] / n_pts[sel]
     kept = np.flatnonzero(keep)
     remap = np.full(k_all, -1, np.int64)
@@ -227,14 +223,11 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     mean_height = np.bincount(owner, weights=cell_mean, minlength=len(kept)) / np.maximum(n_cells, 1)
     r, c = img.rowcol(box)
     bbox = np.zeros((len(kept), 4), np.int64)
-    band = np.zeros((len(kept), 2))
     if len(kept):
         first = offsets[:-1]
-        band[:, 0] = np.minimum.reduceat(bottom, first)
-        band[:, 1] = np.maximum.reduceat(top, first)
         bbox[:, 0] = r[first]                       # cells are row-major: first/last give the rows
         bbox[:, 1] = r[offsets[1:] - 1]
         bbox[:, 2] = np.minimum.reduceat(c, first)
         bbox[:, 3] = np.maximum.reduceat(c, first)
     return TopDownCandidates(mask_index=kept.astype(np.int64), offsets=offsets, keys=keys_of(r, c), top=top,
-                             mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox, band=band)
+                             mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox)
