@@ -33,9 +33,7 @@ class MappingConfig(BaseModel):
     Geometry cleaning before projection (`mapping.clean`; not in the paper, `paper()` and
     `uncleaned()` turn it off): `mask_erode_px` pixels eroded from each mask's border,
     `depth_edge_jump` (relative, None = off) pixels next to a larger depth jump dropped,
-    `outlier_sigmas` (None = off) / `outlier_floor` (m) a mask's pixels farther from its median
-    depth than max(outlier_sigmas robust sigmas, outlier_floor) dropped, `min_cell_points` a
-    candidate's top-down cells with fewer points dropped."""
+    `min_cell_points` a candidate's top-down cells with fewer points dropped."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -55,8 +53,6 @@ class MappingConfig(BaseModel):
     # geometry cleaning before projection (mapping/clean.py; not in the paper)
     mask_erode_px: int = Field(0, ge=0)
     depth_edge_jump: Optional[float] = Field(None, gt=0)
-    outlier_sigmas: Optional[float] = Field(None, gt=0)
-    outlier_floor: float = Field(0.0, ge=0)
     min_cell_points: int = Field(1, ge=1)
 
     @classmethod
@@ -68,8 +64,7 @@ class MappingConfig(BaseModel):
     @classmethod
     def uncleaned(cls, **values: Any) -> "MappingConfig":
         """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
-        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "outlier_sigmas": None, "outlier_floor": 0.0,
-                      "min_cell_points": 1, **values})
+        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, **values})
 
 
 class RetrievalConfig(BaseModel):

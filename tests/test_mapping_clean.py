@@ -26,11 +26,12 @@ def test_depth_edges_mark_both_sides_of_a_jump_only():
     assert not depth_edges(depth, 0.1)[0, 1]
 
 
-def test_outlier_removal_drops_the_leaked_wall_pixels():
+def test_depth_edge_pixels_leave_the_mask():
     depth, mask = _box_scene()
-    out = clean_masks(mask, depth, outlier_sigmas=3.0, outlier_floor=0.2)
-    assert out[0].sum() == 100 and out[0][5:15, 5:15].all()
-    assert mask[0].sum() == 14 * 14                         # the input is left alone
+    out = clean_masks(mask, depth, edge_jump=0.1)
+    assert not out[0][5, 5:15].any() and not out[0][4, 5:15].any()   # both sides of the box rim
+    assert out[0][10, 10] and out[0][3, 3]
+    assert mask[0].sum() == 14 * 14                                   # the input is left alone
 
 
 def test_erosion_and_edges_shrink_but_never_erase_a_small_mask():
@@ -64,6 +65,6 @@ def test_min_cell_points_drops_thinly_supported_cells_and_empty_candidates():
 
 def test_paper_and_uncleaned_turn_cleaning_off():
     for cfg in (MappingConfig.paper(), MappingConfig.uncleaned()):
-        assert cfg.mask_erode_px == 0 and cfg.depth_edge_jump is None and cfg.outlier_sigmas is None
+        assert cfg.mask_erode_px == 0 and cfg.depth_edge_jump is None
         assert cfg.min_cell_points == 1
     assert MappingConfig.paper().delta_geo_strong is None

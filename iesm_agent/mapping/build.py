@@ -34,7 +34,6 @@ class MapBuilder:
         """Project, associate and fuse one frame's candidates."""
         k, cfg = self.intrinsics, self.cfg
         masks = clean_masks(seg.masks, frame.depth, erode_px=cfg.mask_erode_px, edge_jump=cfg.depth_edge_jump,
-                            outlier_sigmas=cfg.outlier_sigmas, outlier_floor=cfg.outlier_floor,
                             min_pixels=cfg.min_mask_pixels)
         cands = project_candidates(frame.depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size,
                                    min_pixels=cfg.min_mask_pixels, max_depth=cfg.max_depth,

@@ -4,8 +4,11 @@ what the field does with noisy depth and masks whose border strays onto the surf
 * `depth_edges`: pixels next to a relative depth jump, the readings a depth sensor smears across a
   discontinuity ("flying pixels") and where a mask border most often lies on the wrong side;
 * `clean_masks`: each mask eroded by a few pixels (its border, where segmenters leak), then its
-  per-instance depth outliers dropped (pixels whose depth is far from the mask's median depth:
-  the wall behind a chair seen through its mask's wandering edge).
+  `depth_edges` pixels dropped.
+
+A per-instance depth-outlier step (pixels farther than 3 robust sigmas, at least 0.15 m, from the
+mask's median depth) was measured on tuning seeds 0-4 (realistic) and lowered the matched count
+(49.6 -> 48.8 per scene), so it is not here.
 
 Each step keeps a mask as it was when cleaning would leave it fewer than `min_pixels` pixels
 with depth, so small objects are not erased.
@@ -14,10 +17,6 @@ with depth, so small objects are not erased.
 from __future__ import annotations
 
 import numpy as np
-
-#: median absolute deviation -> standard deviation of a normal distribution
-MAD_TO_SIGMA = 1.4826
-
 
 def depth_edges(depth: np.ndarray, jump: float) -> np.ndarray:
     """(H, W) bool: pixels of `depth` (H, W) metres (0 = no reading) whose depth differs from a
@@ -38,18 +37,16 @@ def depth_edges(depth: np.ndarray, jump: float) -> np.ndarray:
 
 
 def clean_masks(masks: np.ndarray, depth: np.ndarray, *, erode_px: int = 0, edge_jump: float | None = None,
-                outlier_sigmas: float | None = None, outlier_floor: float = 0.0, min_pixels: int = 1) -> np.ndarray:
+                min_pixels: int = 1) -> np.ndarray:
     """Cleaned copy of `masks` (K, H, W) bool given `depth` (H, W) metres (0 = no reading).
 
     In order: erosion by `erode_px` pixels (square kernel, 0 = off); removal of `depth_edges`
-    pixels at relative jump `edge_jump` (None = off); removal of pixels whose depth is farther
-    than max(`outlier_sigmas` x 1.4826 x MAD, `outlier_floor` m) from the mask's median depth
-    (None = off). A step that would leave a mask under `min_pixels` pixels with depth is
-    skipped for that mask.
+    pixels at relative jump `edge_jump` (None = off). A step that would leave a mask under
+    `min_pixels` pixels with depth is skipped for that mask.
     """
     import cv2
 
-    if len(masks) == 0 or (erode_px <= 0 and edge_jump is None and outlier_sigmas is None):
+    if len(masks) == 0 or (erode_px <= 0 and edge_jump is None):
         return masks
     has_depth = depth > 0
     off_edge = ~depth_edges(depth, edge_jump) if edge_jump is not None else None
@@ -61,12 +58,6 @@ def clean_masks(masks: np.ndarray, depth: np.ndarray, *, erode_px: int = 0, edge
             m = _keep_if_enough(m, cv2.erode(m.view(np.uint8), kernel).view(bool), has_depth, min_pixels)
         if off_edge is not None:
             m = _keep_if_enough(m, m & off_edge, has_depth, min_pixels)
-        if outlier_sigmas is not None:
-            d = depth[m & has_depth]
-            if len(d):
-                med = float(np.median(d))
-                limit = max(outlier_sigmas * MAD_TO_SIGMA * float(np.median(np.abs(d - med))), outlier_floor)
-                m = _keep_if_enough(m, m & (np.abs(depth - med) <= limit), has_depth, min_pixels)
         out[k] = m
     return out
 
