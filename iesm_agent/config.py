@@ -53,12 +53,15 @@ class MappingConfig(BaseModel):
     match_iou: float = Field(0.5, ge=0, lt=1)
     small_fraction: float = Field(0.2, gt=0, le=1)
     # geometry cleaning before projection (mapping/clean.py; not in the paper). Chosen on tuning seeds
-    # 0-4, realistic profile, by matched seen objects per scene (43.8 of 71.6 uncleaned -> 50.8):
-    # erosion {0, 1, 2, 3} px x depth-edge jump {off, 0.02, 0.03, 0.05, 0.1} x cell points {1..5}
-    # (a relative support, 0.2-0.5 of the candidate's mean points per cell, matched 37.8-47.6)
+    # 0-4 of both profiles by matched seen objects per scene, of 71.6 (realistic / easy): uncleaned
+    # 43.8 / 60.4; erosion 1 px + 3 points per cell 49.2 realistic (each alone on easy: 59.6, 60.6);
+    # with a depth-edge jump of 0.03 as well 50.8 / 55.2 (the edge step alone, easy: 60.4 -> 56.6,
+    # on exact depth it cuts slanted surfaces), so it is off. Grid: erosion {0..3} px x edge jump
+    # {off, 0.02, 0.03, 0.05, 0.1} x points per cell {1..5}; a relative support (0.2-0.5 of the
+    # candidate's mean points per cell) matched 37.8-47.6 realistic.
     # (`python -m iesm_agent.evals.studies.mapping_causes`, docs/results.md)
     mask_erode_px: int = Field(1, ge=0)
-    depth_edge_jump: Optional[float] = Field(0.03, gt=0)
+    depth_edge_jump: Optional[float] = Field(None, gt=0)
     min_cell_points: int = Field(3, ge=1)
 
     @classmethod
