@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
-from iesm_agent.colours import ciede2000, colour_name, colour_table, masked_lab, name_lab, rgb_to_lab
+from iesm_agent.colours import DECLARED_SHADING, OBSERVED_SHADING, ciede2000, colour_name, colour_table, masked_lab, name_lab, rgb_to_lab
 from iesm_agent.captioning.keyframes import crop_box, outlined_png, select_keyframes
 from iesm_agent.captioning.schema import CaptionReply, CaptionResult
 from iesm_agent.errors import IesmError
@@ -42,14 +42,17 @@ def test_colour_names_people_use(rgb, name):
 def test_shading_aware_naming_keeps_white_white_in_shade_and_grey_grey():
     table = colour_table()
 
-    def named(rgb, shading=True):
+    def named(rgb, shading=DECLARED_SHADING):
         return table.names[int(name_lab(rgb_to_lab(np.array(rgb, np.float64)), shading))]
 
-    assert named((230, 230, 230), shading=False) == "light grey"  # the plain nearest name
+    assert named((230, 230, 230), shading=None) == "light grey"  # the plain nearest name
     assert named((230, 230, 230)) == "white"  # white in shade: pixels are never brighter than the surface
     assert named((0xD8, 0xDC, 0xD6)) == "light grey"  # a grey that fits as it is stays grey
     assert named((0x92, 0x95, 0x91)) == "grey"
     assert named((0xE6 * 0.9, 0xDA * 0.9, 0xA6 * 0.9)) == "beige"
+    # measured under room lighting, a darker view may still be white; a mid grey stays grey
+    assert named((170, 170, 170)) != "white" and named((170, 170, 170), OBSERVED_SHADING) == "white"
+    assert named((0x60, 0x60, 0x60), OBSERVED_SHADING) != "white"
 
 
 def test_masked_lab_ignores_unmasked_pixels_and_shadowed_faces():

@@ -23,7 +23,8 @@ BOXES = [(1, "table", (1.0, 1.0), (1.2, 0.8), 0.0, 0.75),
          (2, "cup", (1.2, 1.1), (0.15, 0.15), 0.75, 0.87),
          (3, "chair", (2.2, 1.0), (0.5, 0.5), 0.0, 0.9)]
 CAM_Z = 3.0
-INTR = Intrinsics(width=160, height=120, fx=80.0, fy=80.0, cx=79.5, cy=59.5)
+# the simulator's camera (sim.camera.default_intrinsics): the cleaning defaults assume its resolution
+INTR = Intrinsics(width=320, height=240, fx=160.0, fy=160.0, cx=159.5, cy=119.5)
 
 
 def _render(cam_xy: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
@@ -56,7 +57,7 @@ def write_tiny_world(directory: Path, n_frames: int = 4) -> Path:
         present = [iid for iid in sorted(labels) if (ids == iid).sum() > 0]
         seg = Segmentation(masks=np.stack([ids == iid for iid in present]),
                            embeddings=emb[[iid - 1 for iid in present]], scores=np.full(len(present), 0.9, np.float32))
-        write_frame(directory, Frame(index=i, rgb=np.zeros((120, 160, 3), np.uint8), depth=depth, pose=_pose(cam),
+        write_frame(directory, Frame(index=i, rgb=np.zeros((240, 320, 3), np.uint8), depth=depth, pose=_pose(cam),
                                      segmentation=seg, instance_ids=ids))
     grid = GridSpec(cell_size=0.05, origin=(0.0, 0.0), height=50, width=70)
     ys, xs = (np.mgrid[0:grid.height, 0:grid.width] + 0.5) * 0.05
@@ -204,7 +205,7 @@ def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
     import shutil
 
     from iesm_agent.evals.gt_queries import generate_gt_suite
-    from iesm_agent.evals.mapping import observed_masks
+    from iesm_agent.evals.observed import observed_masks
     from iesm_agent.evals.matching import match_instances
 
     frames = tmp_path / "frames"

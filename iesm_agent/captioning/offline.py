@@ -2,7 +2,7 @@
 
 Colour: the lightness-robust median of the masked pixels of every keyframe crop
 (`colours.masked_lab`), the median over crops, named by the nearest XKCD colour under
-CIEDE2000. Size and height class from the map: footprint area and the highest top.
+CIEDE2000 allowing for room lighting (`colours.OBSERVED_SHADING`). Size and height class from the map: footprint area and the highest top.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from typing import Optional
 
 import numpy as np
 
-from ..colours import colour_table, masked_lab, name_lab
+from ..colours import OBSERVED_SHADING, colour_table, masked_lab, name_lab
 from .schema import CaptionResult
 from .views import InstanceView
 
@@ -39,7 +39,7 @@ def measured_colour(view: InstanceView) -> Optional[str]:
             labs.append(found[0])
     if not labs:
         return None
-    return colour_table().names[int(name_lab(np.median(np.stack(labs), axis=0)))]
+    return colour_table().names[int(name_lab(np.median(np.stack(labs), axis=0), OBSERVED_SHADING))]
 
 
 def size_words(view: InstanceView) -> dict[str, str]:

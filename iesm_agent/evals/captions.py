@@ -33,7 +33,7 @@ def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES, frames_dir:
     """{"colour_acc", "colour_name_acc", "n", "min_frames"} of the map's caption colours
     (accuracies None when no instance qualifies)."""
     from ..captioning.views import frames_seen
-    from .mapping import observed_masks
+    from .observed import observed_masks
     from .matching import match_instances
 
     matched = match_instances(scene, gt, observed=observed_masks(frames_dir, gt))

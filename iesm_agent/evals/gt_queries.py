@@ -22,7 +22,7 @@ from typing import Sequence
 import numpy as np
 
 from .generate import GenerationResult, generate_suite
-from .mapping import observed_masks
+from .observed import observed_masks
 from .suite import SuiteQuery, write_suite
 from ..sim.ground_truth import GroundTruth
 from ..store import open_map

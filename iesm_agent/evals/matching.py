@@ -63,7 +63,7 @@ def match_instances(scene: SceneMap, gt, iou_threshold: float = 0.5,
                     observed: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> dict[int, int]:
     """{gt id: built-map id} for pairs whose top-down masks have IoU > `iou_threshold`. `gt` is a
     `GroundTruth`. Its masks: `observed`, the observed footprints of the objects the frames show
-    as (flat cell, gt id, top) entries (`evals.mapping.observed_masks`, what the mapping table's
+    as (flat cell, gt id, top) entries (`evals.observed.observed_masks`, what the mapping table's
     first ground truth scores), else the full box footprints (gt/cells.npz)."""
     gflat, gids, _gtop = observed if observed is not None else gt.cells.entries()
     flat, ids, _top = masks_in_grid(scene.occupancy, scene.grid, gt.grid)

@@ -85,7 +85,7 @@ class NavTrials:
         """Trials for a map built from the frames whose ground truth is `gt`, ids matched by
         `evals.matching.match_instances` (the paper's top-down IoU > 0.5; against the observed
         footprints when `frames_dir`, the frame directory, is given)."""
-        from .mapping import observed_masks
+        from .observed import observed_masks
         from .matching import match_instances
 
         matched = match_instances(scene, gt, observed=observed_masks(frames_dir, gt))

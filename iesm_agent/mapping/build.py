@@ -13,6 +13,7 @@ from ..config import MappingConfig
 from ..errors import IesmError
 from ..frames import Frame, FrameSet, Intrinsics, Segmentation, Segmenter
 from ..store.model import SceneMap
+from .clean import clean_masks
 from .dictionary import InstanceDictionary
 from .project import project_candidates
 
@@ -31,9 +32,12 @@ class MapBuilder:
 
     def add(self, frame: Frame, seg: Segmentation) -> None:
         """Project, associate and fuse one frame's candidates."""
-        k = self.intrinsics
-        cands = project_candidates(frame.depth, seg.masks, k.fx, k.fy, k.cx, k.cy, frame.pose, self.cfg.cell_size,
-                                   min_pixels=self.cfg.min_mask_pixels, max_depth=self.cfg.max_depth)
+        k, cfg = self.intrinsics, self.cfg
+        masks = clean_masks(seg.masks, frame.depth, erode_px=cfg.mask_erode_px, edge_jump=cfg.depth_edge_jump,
+                            min_pixels=cfg.min_mask_pixels)
+        cands = project_candidates(frame.depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size,
+                                   min_pixels=cfg.min_mask_pixels, max_depth=cfg.max_depth,
+                                   min_cell_points=cfg.min_cell_points)
         if self.dictionary is None:
             self.dictionary = InstanceDictionary(seg.embeddings.shape[1], self.cfg)
         elif seg.embeddings.shape[1] != self.dictionary.embeddings.shape[1]:

@@ -180,13 +180,14 @@ def pixel_cells(depth: np.ndarray, pixels: np.ndarray, fx: float, fy: float, cx:
 
 def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: float, cy: float,
                        pose: np.ndarray, cell_size: float, *, min_pixels: int = 1,
-                       max_depth: float = np.inf) -> TopDownCandidates:
+                       max_depth: float = np.inf, min_cell_points: int = 1) -> TopDownCandidates:
     """Top-down masks and heights of every mask in `masks` (K, H, W) bool, given `depth` (H, W)
     metres (0 = no reading), intrinsics in pixels (OpenCV: pixel (u, v) centred at integer
     coordinates), `pose` (4, 4) camera-to-world and `cell_size` m.
 
     Pixels without depth or farther than `max_depth` are ignored; masks with fewer than
-    `min_pixels` usable pixels are dropped. Every pixel counts. Vectorised: the frame's pixels
+    `min_pixels` usable pixels are dropped; a candidate's cells holding fewer than
+    `min_cell_points` of its points are left out of its footprint (and its heights). Vectorised: the frame's pixels
     are binned once (`cell_image`), each (mask, pixel) gets the integer code
     mask * (n_box + 1) + box cell, and the codes are grouped by counting (`cells.group_ids`):
     no sort of points, no per-mask loop beyond one `flatnonzero` per mask.
@@ -205,9 +206,10 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     group_k, group_cell = np.divmod(groups, n)
     has_depth = group_cell < img.n_box
     usable_px = np.bincount(group_k[has_depth], weights=n_pts[has_depth], minlength=k_all)
-    keep = usable_px >= max(min_pixels, 1)
+    supported = has_depth & (n_pts >= min_cell_points)
+    keep = (usable_px >= max(min_pixels, 1)) & (np.bincount(group_k[supported], minlength=k_all) > 0)
     # one entry per (candidate, cell): candidate-major, cells row-major inside each candidate
-    sel = np.flatnonzero(has_depth & keep[group_k])
+    sel = np.flatnonzero(supported & keep[group_k])
     cell_k, box = group_k[sel], group_cell[sel]
     top = top[sel]
     cell_mean = sums[sel] / n_pts[sel]

@@ -9,6 +9,7 @@ from ..errors import IesmError
 from ..store.model import Room, SceneMap
 from .config import RoomConfig
 from .labels import CellLabels, object_votes
+from .outline import cells_polygon
 from .segment import RoomSegmentation, segment_room_map
 
 
@@ -25,16 +26,16 @@ def structural_masks(scene: SceneMap, config: RoomConfig = RoomConfig()) -> tupl
 
 
 def room_polygon(mask: np.ndarray, scene: SceneMap) -> list[tuple[float, float]] | None:
-    """Outline (x, y) in metres of the largest blob of a (H, W) bool room mask (cell centres,
-    simplified to within one cell)."""
+    """Outline (x, y) in metres of the largest blob of a (H, W) bool room mask (through cell
+    corners, `outline.cells_polygon`, simplified to within one cell by `cv2.approxPolyDP`)."""
     import cv2
 
-    contours, _ = cv2.findContours(mask.astype(np.uint8), cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
-    if not contours:
+    corners = cells_polygon(mask, 1.0)
+    if not corners:
         return None
-    outline = cv2.approxPolyDP(max(contours, key=cv2.contourArea), 1.0, True).reshape(-1, 2)
+    outline = cv2.approxPolyDP(np.asarray(corners, np.float32).reshape(-1, 1, 2), 1.0, True).reshape(-1, 2)
     s, (ox, oy) = scene.grid.cell_size, scene.grid.origin
-    return [(round(ox + (c + 0.5) * s, 3), round(oy + (r + 0.5) * s, 3)) for c, r in outline.tolist()]
+    return [(round(ox + float(x) * s, 3), round(oy + float(y) * s, 3)) for x, y in outline.tolist()]
 
 
 def instance_rooms(scene: SceneMap, room_map: np.ndarray) -> dict[int, int]:

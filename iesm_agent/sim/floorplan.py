@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import IesmError
+from ..rooms.outline import cells_polygon
 from .catalog import FOOTPRINTS, OPEN_PLAN_PAIRS, PROGRAMS, PUBLIC
 
 CELL = 0.5  # coarse plan cell, metres
@@ -179,41 +180,6 @@ def boundary_runs(grid: np.ndarray, cell: float) -> list[WallRun]:
         for line, start, end, code in _runs(codes):
             runs.append(WallRun(code // n - 1, code % n - 1, along_x, line * cell, start * cell, end * cell))
     return runs
-
-
-def cells_polygon(mask: np.ndarray, cell: float) -> list[tuple[float, float]]:
-    """Outer boundary of a cell region as a counter-clockwise rectilinear polygon (metres),
-    collinear vertices removed."""
-    rows, cols = mask.shape
-    padded = np.pad(mask, 1)
-    edges: dict[tuple[int, int], list[tuple[int, int]]] = {}
-    # (neighbour offset, edge start, edge end) with corners as (x, y) in cell units of cell (r, c)
-    sides = (((-1, 0), lambda r, c: (c, r), lambda r, c: (c + 1, r)),
-             ((0, 1), lambda r, c: (c + 1, r), lambda r, c: (c + 1, r + 1)),
-             ((1, 0), lambda r, c: (c + 1, r + 1), lambda r, c: (c, r + 1)),
-             ((0, -1), lambda r, c: (c, r + 1), lambda r, c: (c, r)))
-    for (dr, dc), start, end in sides:
-        open_side = mask & ~padded[1 + dr:1 + dr + rows, 1 + dc:1 + dc + cols]
-        r, c = np.nonzero(open_side)
-        for a, b in zip(zip(*start(r, c)), zip(*end(r, c))):
-            edges.setdefault((int(a[0]), int(a[1])), []).append((int(b[0]), int(b[1])))
-    loops = []
-    while edges:
-        loop, point = [], next(iter(edges))
-        while point in edges:
-            loop.append(point)
-            nxt = edges[point].pop()
-            if not edges[point]:
-                del edges[point]
-            point = nxt
-        loops.append(loop)
-    loop = max(loops, key=len)
-    keep = [p for k, p in enumerate(loop) if not _collinear(loop[k - 1], p, loop[(k + 1) % len(loop)])]
-    return [(x * cell, y * cell) for x, y in keep]
-
-
-def _collinear(a, b, c) -> bool:
-    return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]) == 0
 
 
 def _choose_doors(labels: dict[int, str], runs: list[WallRun], open_pair: tuple[int, int] | None,

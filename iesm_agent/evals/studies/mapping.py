@@ -3,8 +3,9 @@
     python -m iesm_agent.evals.studies.mapping --seeds 10-14 --realism realistic --out docs/results/mapping-realistic
 
 For each seed: generate a scene and render its frames (iesm_agent.sim, the given realism profile),
-build our 2.5D map with and without the second pass and the VLMaps-style 2D point-wise map from
-the same frames and masks, score all three against both ground truths (observed footprint, full
+build our 2.5D map with and without the second pass, without geometry cleaning
+(`MappingConfig.uncleaned()`) and under the paper's rules (`MappingConfig.paper()`), and the
+VLMaps-style 2D point-wise map from the same frames and masks, score them all against both ground truths (observed footprint, full
 object footprint; evals/mapping.py), and write OUT/table.md + OUT/summary.json.
 """
 
@@ -28,8 +29,10 @@ from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_chec
 from ..baseline2d import PointwiseMap2D
 from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
 
-METHODS = ("ours", "ours_no_second_pass", "pointwise_2d", "pointwise_2d_same")
-TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass", "pointwise_2d": "2D point-wise + GT mask",
+METHODS = ("ours", "ours_no_second_pass", "ours_uncleaned", "paper", "pointwise_2d", "pointwise_2d_same")
+TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass",
+          "ours_uncleaned": "Ours without geometry cleaning (MappingConfig.uncleaned())",
+          "paper": "Paper's rules (MappingConfig.paper())", "pointwise_2d": "2D point-wise + GT mask",
           "pointwise_2d_same": "2D point-wise + GT mask, on the objects ours matched"}
 #: the baseline's rows: its instances are the ground-truth masks, so instance counts are undefined;
 #: the "same objects" row differs from the full one only in the matched-object columns
@@ -46,14 +49,20 @@ def study_scene(frames_dir: Path, cfg: MappingConfig) -> dict:
     cfg = cfg.model_copy(update={"cell_size": frames.meta.cell_size})
     categories, e = category_vectors(frames)
     builder, flat2d = MapBuilder(frames.intrinsics, cfg), PointwiseMap2D(frames.intrinsics, e, cfg)
+    others = {name: MapBuilder(frames.intrinsics, make(cell_size=cfg.cell_size))
+              for name, make in (("ours_uncleaned", MappingConfig.uncleaned), ("paper", MappingConfig.paper))}
     t0 = time.perf_counter()
     for frame in frames:
         builder.add(frame, frame.segmentation)
         flat2d.add(frame, frame.segmentation)
+    build_s = time.perf_counter() - t0
+    for frame in frames:
+        for other in others.values():
+            other.add(frame, frame.segmentation)
     kw = dict(scene_id=frames.meta.scene_id, embedding_space=frames.meta.embedding_space)
     maps = {"ours": builder.finish(categories, e, second_pass=True, **kw),
-            "ours_no_second_pass": builder.finish(categories, e, second_pass=False, **kw)}
-    build_s = time.perf_counter() - t0
+            "ours_no_second_pass": builder.finish(categories, e, second_pass=False, **kw),
+            **{name: other.finish(categories, e, second_pass=True, **kw) for name, other in others.items()}}
     keys, scores = flat2d.finish()
     gt = GroundTruth.load(frames_dir)
     out: dict = {}

@@ -1,0 +1,94 @@
+"""Why a seen ground-truth object has no matching instance in a built map: one cause per unmatched
+object, from the frames' masks (which object each mask mostly shows), the map's observations
+(which instance each mask went to) and the top-down masks (observed footprint ground truth).
+
+An instance's main object is the object most of its fused masks show (ties: the lower id); an
+instance is the object's own when that is the object. Causes, tested in this order (`COVER` =
+0.5 of the object's observed cells):
+* "never segmented": no mask that shows mostly the object reached the map (the segmenter missed
+  it or merged it into a neighbour's mask in every view, or its masks had too few depth pixels);
+* "swallowed": most of the masks that show it went into instances of other objects (fused into
+  its support, its wall, its neighbour);
+* "split": its masks went into two or more own instances, none covering `COVER` of it;
+* "inflated": an own instance covers at least `COVER` of it, yet the IoU stays at or under the
+  match threshold: the footprint spread beyond what was seen;
+* "partial": what remains: its own instances cover under `COVER` of it (misplaced or thin).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+
+from ..frames import FrameSet
+from ..mapping.cells import intersections
+
+#: share of an object's observed cells an own instance must cover to explain it
+COVER = 0.5
+CAUSES = ("never segmented", "swallowed", "split", "inflated", "partial")
+
+
+def mask_objects(frames: FrameSet, min_pixels: int) -> dict[tuple[int, int], int]:
+    """(frame index, mask index) -> the ground-truth id most of the mask's pixels show, for every
+    mask of at least `min_pixels` pixels (frames need seg.npz and inst.png)."""
+    out: dict[tuple[int, int], int] = {}
+    for i in range(len(frames)):
+        frame = frames.read(i)
+        seg, inst = frame.segmentation, frame.instance_ids
+        if seg is None or inst is None:
+            continue
+        flat = inst.ravel().astype(np.int64)
+        for m, mask in enumerate(seg.masks.reshape(len(seg.masks), -1)):
+            ids = flat[mask]
+            if len(ids) >= min_pixels:
+                out[(frame.index, m)] = int(np.bincount(ids).argmax())
+    return out
+
+
+def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[np.ndarray, np.ndarray],
+                     gt_ids: np.ndarray, matched: set[int], observations: np.ndarray,
+                     shows: dict[tuple[int, int], int]) -> dict[int, str]:
+    """Cause (one of `CAUSES`) of every id of `gt_ids` (N,) not in `matched`. Masks are (flat cell,
+    id) entry arrays in one grid: `pred_cells` the map's instances, `gt_cells` the observed
+    ground-truth footprints; `observations` (M, >= 3) the map's rows [instance id, frame, mask,
+    ...]; `shows` the object each frame mask mostly shows (`mask_objects`)."""
+    went: dict[int, Counter] = {}          # object -> Counter of instances its masks went to
+    holds: dict[int, Counter] = {}         # instance -> Counter of objects its masks show
+    for inst, frame, mask in np.asarray(observations, np.float64)[:, :3].astype(np.int64).tolist():
+        obj = shows.get((frame, mask))
+        if obj is not None:
+            went.setdefault(obj, Counter())[inst] += 1
+            holds.setdefault(inst, Counter())[obj] += 1
+    main = {inst: min(c.items(), key=lambda kv: (-kv[1], kv[0]))[0] for inst, c in holds.items()}
+    gflat, gid = gt_cells
+    g, p, inter = intersections(gflat, gid, *pred_cells)
+    gt_area = np.bincount(gid, minlength=int(gid.max(initial=0)) + 1)
+    out: dict[int, str] = {}
+    for i in gt_ids.tolist():
+        if i in matched:
+            continue
+        masks = went.get(i)
+        if not masks:
+            out[i] = "never segmented"
+            continue
+        own = [inst for inst in masks if main.get(inst) == i]
+        if sum(masks[inst] for inst in own) * 2 < sum(masks.values()):
+            out[i] = "swallowed"
+            continue
+        sel = (g == i) & np.isin(p, own)
+        cover = inter[sel] / max(int(gt_area[i]), 1)
+        best = float(cover.max()) if len(cover) else 0.0
+        if best >= COVER:
+            out[i] = "inflated"
+        elif len(own) >= 2:
+            out[i] = "split"
+        else:
+            out[i] = "partial"
+    return out
+
+
+def cause_counts(causes: dict[int, str]) -> dict[str, int]:
+    """Number of objects per cause, every cause listed."""
+    counts = Counter(causes.values())
+    return {c: int(counts.get(c, 0)) for c in CAUSES}
