@@ -111,7 +111,7 @@ def test_the_request_sentence_is_the_one_naming_a_kind():
 
 
 def test_landmark_attributes_stay_with_the_landmark():
-    assert analyse_query("the plant by the tall bookshelf").attrs == []
+    assert analyse_query("the plant by the tall bookshelf").attrs == ()
     assert ("size", "tall") in analyse_query("the tall plant by the bookshelf").attrs
     assert ("color", "blue") in analyse_query("the mug with the blue handle").attrs
     assert {("material", "wood"), ("material", "metal")} <= set(analyse_query("the oak and steel shelf").attrs)

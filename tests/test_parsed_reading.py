@@ -95,3 +95,13 @@ def test_the_way_out_of_a_room_is_its_door(text, room):
 def test_a_room_to_go_to_is_not_a_way_out_and_a_named_kind_stays():
     assert "door" not in analyse_query("bring me to the garage").targets
     assert analyse_query("leave the mug by the kettle").targets.get("cup") == 1.0
+
+
+def test_the_reading_is_immutable_and_shared():
+    info = analyse_query("the red mug in the kitchen")
+    assert analyse_query("the red mug in the kitchen") is info
+    with pytest.raises(AttributeError):
+        info.target_phrase = "kettle"
+    with pytest.raises(TypeError):
+        info.targets["kettle"] = 1.0
+    assert info.targets == {"cup": 1.0} and info.rooms == {"kitchen": 1.0}

@@ -58,7 +58,7 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
     if targets != info.targets or found_rooms != info.rooms or overlap != info.overlap:
         kin = functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0])
         grounded = dataclasses.replace(
-            info, targets=targets, kin=kin, rooms=found_rooms, overlap=overlap, memo={},
+            info, targets=targets, kin=kin, rooms=found_rooms, overlap=overlap,
             target_phrase=info.target_phrase or (info.unknown_target if (targets, overlap) != (info.targets, info.overlap)
                                                  else None),
             room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))

@@ -3,8 +3,9 @@ with the shipped lexicon. Every provider and the candidate selection rely on thi
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import MISSING, dataclass, field, fields
 from functools import lru_cache
+from types import MappingProxyType, SimpleNamespace
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
@@ -18,9 +19,10 @@ _UNSPECIFIC = frozenset({"object"})
 _THEME_WEIGHT = 0.35
 
 
-@dataclass
+@dataclass(frozen=True, eq=False)
 class QueryInfo:
-    """What a query asks for. Weights are in (0, 1]."""
+    """What a query asks for (immutable: `analyse_query` memoises it and every caller shares it).
+    Weights are in (0, 1]."""
 
     text: str
     targets: dict[str, float] = field(default_factory=dict)   # named categories (1.0 head, 0.35 theme)
@@ -28,7 +30,7 @@ class QueryInfo:
     generic: str | None = None                                # class noun used as target ("seating")
     rooms: dict[str, float] = field(default_factory=dict)     # canonical room -> 1.0 explicit, 0.5 implied
     room_phrase: str | None = None
-    attrs: list[tuple[str, str]] = field(default_factory=list)  # (kind, canonical value)
+    attrs: tuple[tuple[str, str], ...] = ()  # (kind, canonical value)
     extra: frozenset[str] = frozenset()                       # other content lemmas
     afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
     kin: dict[str, float] = field(default_factory=dict)       # kinds that serve the named kind's purpose
@@ -42,7 +44,15 @@ class QueryInfo:
     #: attributes read from the words after an exclusion marker, which add nothing to the above
     excluded_targets: frozenset[str] = frozenset()
     excluded_attrs: frozenset[tuple[str, str]] = frozenset()
-    memo: dict = field(default_factory=dict, repr=False, compare=False)  # scorer's per-query cache
+
+    def __post_init__(self) -> None:
+        """Freeze the containers too: the reading is shared by every caller of `analyse_query`."""
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if isinstance(value, dict):
+                object.__setattr__(self, f.name, MappingProxyType(dict(value)))
+            elif isinstance(value, list):
+                object.__setattr__(self, f.name, tuple(value))
 
     @property
     def named(self) -> bool:
@@ -264,7 +274,7 @@ def analyse_query(text: str) -> QueryInfo:
     after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     reading = _read_request(lex, text)
-    info = QueryInfo(text=text)
+    info = _draft(text)
     if reading.ruled_out is not None:
         info.excluded_targets = frozenset(reading.ruled_out.targets)
         info.excluded_attrs = frozenset(reading.ruled_out.attrs)
@@ -290,12 +300,22 @@ def analyse_query(text: str) -> QueryInfo:
     if afford:
         top = max(afford.values())
         info.afford = {c: w / top for c, w in afford.items()}
-    if not info.named and _leaves_a_room(reading):
+    if not _named(info) and _leaves_a_room(reading):
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
-    return info
+    return QueryInfo(**vars(info))
+
+
+def _draft(text: str) -> SimpleNamespace:
+    """A mutable draft of a `QueryInfo` with its defaults, filled while the request is read."""
+    return SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
+                              for f in fields(QueryInfo) if f.name != "text"}, text=text)
+
+
+def _named(info) -> bool:
+    return any(w >= 1.0 for w in info.targets.values())
 
 
 def _leaves_a_room(reading: _Reading) -> bool:
@@ -309,7 +329,7 @@ def _leaves_a_room(reading: _Reading) -> bool:
 
 
 def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
-                info: QueryInfo) -> tuple[dict[str, float], list[Span], set[str]]:
+                info: SimpleNamespace) -> tuple[dict[str, float], list[Span], set[str]]:
     """Fill `info` from the lexicon spans: the head's categories, rooms, attributes of the target
     and the landmarks named beside it; return (function evidence, attribute spans, landmark words)."""
     surface, lemmas, head = reading.surface, reading.lemmas, target.head
@@ -345,7 +365,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
         if attr and not s.has("cue") and not in_target and _outside_target(reading.structure, surface, s, target, described):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
-        info.attrs.extend(kv for kv in attr if kv not in info.attrs)
+        info.attrs = info.attrs + tuple(kv for kv in attr if kv not in info.attrs)
         if attr:
             attr_spans.append(s)
         if attr and not s.has("cue"):
@@ -362,7 +382,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
 
 
 def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[int], attr_spans: list[Span],
-                landmark_words: set[str], info: QueryInfo) -> None:
+                landmark_words: set[str], info: SimpleNamespace) -> None:
     """Fill `info`'s attribute slots, loose words and the words the lexicon does not know (a
     target or room phrase to ground in the map)."""
     surface, lemmas = reading.surface, reading.lemmas
@@ -377,7 +397,7 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
     for slot in info.slots:
         words.update(slot.base.split())
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
-    if not info.named and info.generic is None and not info.afford:
+    if not _named(info) and info.generic is None and not info.afford:
         info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
     if not any(w >= 1.0 for w in info.rooms.values()):
         place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
@@ -452,7 +472,7 @@ def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozens
     return head
 
 
-def _implied_rooms(lex: Lexicon, words: list[str], info: QueryInfo) -> None:
+def _implied_rooms(lex: Lexicon, words: list[str], info: SimpleNamespace) -> None:
     for w in words:
         for kind, value in lex.phrases.get((w,), ()):
             if kind == "room":

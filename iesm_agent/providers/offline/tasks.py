@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import threading
+import weakref
 from functools import lru_cache
 from typing import Any, Callable
 
@@ -266,11 +268,27 @@ def _parse_candidate_block(lines: tuple[str, ...]) -> tuple[tuple[int, Record], 
     return tuple(out)
 
 
+#: per reading, the scorer's values that recur across a query's prompts (the reading itself is
+#: immutable and shared: its cache lives here, dropped with the reading)
+_MEMOS: "weakref.WeakKeyDictionary[QueryInfo, dict]" = weakref.WeakKeyDictionary()
+_MEMOS_LOCK = threading.Lock()
+
+
+def _memo(q: QueryInfo) -> dict:
+    """The scorer's cache for reading `q` (the same dict for every prompt of one query)."""
+    with _MEMOS_LOCK:
+        memo = _MEMOS.get(q)
+        if memo is None:
+            memo = _MEMOS[q] = {}
+        return memo
+
+
 def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[np.ndarray, list[Record], np.ndarray]:
     """(ids, records, components (N, 7)) for the parsed candidates; memoised per query on the
     whole block (the same block comes with each expert prompt)."""
     key = ("block", tuple(i for i, _ in parsed), tuple(id(r) for _, r in parsed))
-    hit = q.memo.get(key)
+    memo = _memo(q)
+    hit = memo.get(key)
     if hit is not None:
         return hit
     lex = load_lexicon()
@@ -278,8 +296,8 @@ def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[n
     rows = [_components(lex, q, r) for r in records]
     out = (np.array([i for i, _ in parsed], dtype=np.int64), records,
            np.array(rows, dtype=np.float64).reshape(len(rows), _N_COMPONENTS))
-    if len(q.memo) < 4096:
-        q.memo[key] = out
+    if len(memo) < 4096:
+        memo[key] = out
     return out
 
 
@@ -288,7 +306,7 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
 
     Memoised per query on the parts candidates share (single concepts, rooms, attribute slots),
     so a value that recurs across candidates is scored once per query."""
-    memo = q.memo
+    memo = _memo(q)
     label = afford = kin = 0.0
     for cc, wc in r.concepts:
         key = ("c", cc)
@@ -317,7 +335,7 @@ def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
     the same words up to shade 0.9, its words in the candidate's text 0.85, the same family
     0.7-0.8, a related family 0.4; -0.5 when the candidate says the opposite and nothing matches
     ("the biggest table" against a small table)."""
-    memo = q.memo
+    memo = _memo(q)
     best = 0.0
     for other in r.slots:
         key = ("s", index, other)
