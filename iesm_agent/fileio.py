@@ -22,8 +22,9 @@ import struct
 import tempfile
 import zipfile
 import zlib
+from contextlib import contextmanager
 from pathlib import Path
-from typing import IO, Any, Callable, Iterable, Optional, TypeVar
+from typing import IO, Any, Callable, Iterable, Iterator, Optional, TypeVar
 
 import numpy as np
 from pydantic import BaseModel, ValidationError
@@ -465,3 +466,26 @@ def read_npz(path: str | Path, names: Iterable[str], *, kinds: dict[str, str] | 
         raise error(f"not a readable .npz archive (truncated or corrupted: {' '.join(str(exc).split())})",
                     path) from None
     return out
+
+
+@contextmanager
+def staged_directory(target: Path) -> Iterator[Path]:
+    """A fresh directory beside `target` (`.NAME.iesm-tmp.PID.*`, so that a later run removes it
+    when this process was killed) that replaces `target` when the block succeeds and is removed
+    when it fails."""
+    target = Path(target)
+    if not target.parent.resolve().is_dir():
+        raise IesmError("output directory's parent does not exist", target)
+    stage = temp_dir(target)
+    try:
+        yield stage
+        if target.exists():  # the caller checked it may be replaced (cli.outputs.check_frame_output)
+            old = stage.with_name(stage.name + ".old")
+            os.replace(target, old)
+            os.replace(stage, target)
+            shutil.rmtree(old)
+        else:
+            os.replace(stage, target)
+    except BaseException:
+        shutil.rmtree(stage, ignore_errors=True)
+        raise

@@ -299,7 +299,7 @@ def test_a_killed_runs_staging_folder_is_removed_by_the_next_run(seven, tmp_path
 
 
 def test_the_staging_folder_names_the_process(seven, tmp_path, monkeypatch):
-    from iesm_agent.frames.convert import staged_directory
+    from iesm_agent.fileio import staged_directory
 
     with staged_directory(tmp_path / "out") as stage:
         assert stage.name.startswith(f".out.iesm-tmp.{os.getpid()}.")

@@ -67,7 +67,8 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Run perception once: masks + embeddings in our frame layout, from any supported recording."""
         from ..frames import FrameSet, matching_layouts, open_recording
-        from ..frames.convert import import_recording, staged_directory
+        from ..fileio import staged_directory
+        from ..frames.convert import import_recording
         from ..segment import SEGMENTERS, SegmenterSpec
         from ..segment.run import segment_frame_set
         from .progress import progress_bar

@@ -2,15 +2,13 @@
 
 from __future__ import annotations
 
-import os
-import shutil
 from pathlib import Path
 from typing import Optional
 
 import typer
 
 from ..errors import IesmError
-from ..fileio import temp_dir
+from ..fileio import staged_directory
 from .outputs import check_frame_output
 from .progress import progress_bar
 
@@ -58,21 +56,9 @@ def register(app: typer.Typer) -> None:
         check_frame_output(out, force, "sim")
         config = _load_faults(faults, seed)
         world = generate_scene(seed, size, open_plan)
-        tmp = temp_dir(out)  # named as our temporary files: a killed run's is removed by the next
-        try:
-            with progress_bar("rendering") as bar:
-                task = bar.add_task("frames", total=len(world.poses))
-                summary = render_frames(world, tmp, config, progress=lambda i: bar.advance(task), realism=profile)
-            if out.exists():
-                old = tmp.with_name(tmp.name + ".old")
-                os.replace(out, old)
-                os.replace(tmp, out)
-                shutil.rmtree(old)
-            else:
-                os.replace(tmp, out)
-        finally:
-            if tmp.exists():
-                shutil.rmtree(tmp)
+        with staged_directory(out) as stage, progress_bar("rendering") as bar:  # a killed run's stage goes next run
+            task = bar.add_task("frames", total=len(world.poses))
+            summary = render_frames(world, stage, config, progress=lambda i: bar.advance(task), realism=profile)
         opened = ", ".join(" + ".join(p) for p in summary["open_plan"]) or "none"
         print(f"scene {summary['scene_id']}: {summary['rooms']} rooms, {summary['instances']} instances "
               f"({summary['structural']} walls/doors/windows, {summary['stacked']} stacked), "

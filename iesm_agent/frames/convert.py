@@ -5,12 +5,9 @@ leaves nothing behind."""
 
 from __future__ import annotations
 
-import os
-import shutil
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Callable
 
 import numpy as np
 
@@ -18,7 +15,7 @@ from ..errors import IesmError
 from .checks import BadFrame, SkipLog, check_depth_unit, pose_reason
 from .gravity import Alignment, estimate_alignment, identity
 from .ours import Frame, SceneMeta, write_frame, write_frame_set
-from ..fileio import read_image, temp_dir, utf8_text
+from ..fileio import read_image, utf8_text
 from .recording import Recording
 
 ALIGN_SAMPLE = 30  # frames used to find the floor
@@ -37,27 +34,6 @@ class ImportReport:
         return [*self.notes, self.alignment.description, self.log.summary()]
 
 
-@contextmanager
-def staged_directory(target: Path) -> Iterator[Path]:
-    """A fresh directory beside `target` (`.NAME.iesm-tmp.PID.*`, so that a later run removes it
-    when this process was killed) that replaces `target` when the block succeeds and is removed
-    when it fails."""
-    target = Path(target)
-    if not target.parent.resolve().is_dir():
-        raise IesmError("output directory's parent does not exist", target)
-    stage = temp_dir(target)
-    try:
-        yield stage
-        if target.exists():  # the caller checked it may be replaced (cli.outputs.check_frame_output)
-            old = stage.with_name(stage.name + ".old")
-            os.replace(target, old)
-            os.replace(stage, target)
-            shutil.rmtree(old)
-        else:
-            os.replace(stage, target)
-    except BaseException:
-        shutil.rmtree(stage, ignore_errors=True)
-        raise
 
 
 def _read(rec: Recording, i: int, log: SkipLog, skip_bad: bool) -> Frame | None:
