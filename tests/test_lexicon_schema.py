@@ -102,3 +102,12 @@ def test_every_category_the_lexicon_names_exists():
     named |= {c for g in cats.generic.values() for c in g.core + g.related}
     named |= set(cats.parents) | {p for ps in cats.parents.values() for p in ps}
     assert named - known == set()
+
+
+def test_one_tokeniser_the_store_splits_what_the_lexicon_reads():
+    from iesm_agent.lexicon import load_lexicon, words
+
+    text = "The off-white L-shaped sofa's cushion / kid's room, 2nd floor"
+    assert words(text) == ["the", "off", "white", "l", "shaped", "sofa", "s", "cushion", "kid", "s", "room", "2nd",
+                           "floor"]
+    assert [w for t in load_lexicon().tokens(text) for w in words(t)] == words(text)

@@ -14,6 +14,13 @@ from functools import lru_cache
 from importlib import resources
 
 _TOKEN = re.compile(r"[a-z0-9]+(?:['\-][a-z0-9]+)*", re.I)
+_JOINERS = re.compile(r"['\-]")
+
+
+def words(text: str) -> list[str]:
+    """The lowercase letter-and-digit runs of `text` (apostrophes, hyphens and all punctuation
+    split): the word tokens `Lexicon.tokens` reads, with its compounds taken apart."""
+    return [part for tok in _TOKEN.findall(text.lower()) for part in _JOINERS.split(tok) if part]
 
 #: span kinds; "cue" values are affordance entry indices (as strings)
 KINDS = ("cat", "gen", "room", "color", "material", "shape", "size", "desc", "cue")

@@ -13,7 +13,6 @@ in [0, 1]. When the map has embeddings from the model `embeddings.get_encoder()`
 from __future__ import annotations
 
 
-import re
 from pathlib import Path
 from typing import Any, Optional, Union
 
@@ -21,6 +20,7 @@ import numpy as np
 from rapidfuzz import fuzz, process, utils
 
 from ..errors import IesmError
+from ..lexicon import words
 from .geometry import Boxes, describe_pair, is_under, rests_on
 from .model import SceneMap
 from .tools import function_schema
@@ -37,14 +37,10 @@ STOPWORDS = frozenset(
     "a an the in on of to at by for from with and or is are be it its this that these those my your our "
     "me i you we please go find show take get where which what one there here near next some".split())
 _FIELDS = {"label": 1.0, "tags": 0.7, "alt": 0.6, "room": 0.6, "caption": 0.4}
-_TOKEN = re.compile(r"[a-z0-9]+")
 _EMBED_WEIGHT = 0.5
 _UNSET = object()
 
 
-def tokens(text: str) -> list[str]:
-    """Lowercase alphanumeric tokens of `text` (punctuation such as '/' splits words)."""
-    return _TOKEN.findall(text.lower())
 
 
 def _singular(tok: str) -> str:
@@ -103,11 +99,11 @@ class MapStore:
         """Vocabulary, per-field postings (vocab index -> instance rows) and idf."""
         field_tokens: dict[str, list[set[str]]] = {f: [] for f in _FIELDS}
         for view in self._views:
-            field_tokens["label"].append(set(tokens(view["label"])))
-            field_tokens["alt"].append(set(tokens(" ".join(view["alt_labels"]))))
-            field_tokens["room"].append(set(tokens(view["room"] or "")))
-            field_tokens["tags"].append(set(tokens(" ".join(view["tags"].values()))))
-            field_tokens["caption"].append(set(tokens(view["caption"])))
+            field_tokens["label"].append(set(words(view["label"])))
+            field_tokens["alt"].append(set(words(" ".join(view["alt_labels"]))))
+            field_tokens["room"].append(set(words(view["room"] or "")))
+            field_tokens["tags"].append(set(words(" ".join(view["tags"].values()))))
+            field_tokens["caption"].append(set(words(view["caption"])))
         vocab = sorted(set().union(*(s for sets in field_tokens.values() for s in sets)))
         self._vocab = vocab
         self._vocab_index = {t: i for i, t in enumerate(vocab)}
@@ -193,7 +189,7 @@ class MapStore:
 
     def _lexical(self, text: str) -> np.ndarray:
         """(N,) lexical score in [0, 1] of every instance for `text` (see module docstring)."""
-        qtoks = list(dict.fromkeys(t for t in tokens(text) if t not in STOPWORDS))
+        qtoks = list(dict.fromkeys(t for t in words(text) if t not in STOPWORDS))
         total = np.zeros(self._n)
         weight_sum = 0.0
         coverage = np.zeros(self._n)
