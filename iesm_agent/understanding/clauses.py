@@ -1,5 +1,5 @@
 """Relative clauses whose preposition has no object of its own ("the cabinet the printer sits on",
-"the sink with the mirror above it", "the one the clock hangs over"): the noun inside the clause
+"the sink with the mirror above it", "the one the calendar hangs over"): the noun inside the clause
 is the landmark, the noun before it the target, and the relation points from the landmark to the
 target. Shared by the query reading (`query`: where the target phrase ends) and the spatial
 reading (`spatial`: which noun is the landmark and which way the relation goes)."""

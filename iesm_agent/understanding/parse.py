@@ -250,8 +250,8 @@ def _misread_verb(token) -> bool:
 
 def _object_of(doc, verb) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition
-    ("take me to the sofa"), or, through a clause it governs, that clause's target ("I want to
-    dust the frame", "you need to select the ottoman")."""
+    ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
+    dust the frame", "you should pick the footstool")."""
     for child in verb.children:
         if child.dep_ in ("dobj", "attr", "oprd") and (child.pos_ in _NOUNS or child.lower_ in ("one", "ones")):
             return child.i

@@ -247,7 +247,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     if structure.target is None or structure.words[structure.target].start >= getattr(request[0], "at", 0):
         tokens = request  # what comes before the request phrase only says why
     else:
-        preamble = []  # the parse's target comes first ("The settee shaped like an L. Go there.")
+        preamble = []  # the parse's target comes first ("A round rug by the door. Head there.")
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)

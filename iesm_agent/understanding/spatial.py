@@ -60,7 +60,7 @@ class Relation:
     value: str = ""
     order: int = 0
     landmark_where: str = ""  # "corner" / "middle" / "wall": which of the landmark's instances
-    negated: bool = False     # "the cup that is not on the table"
+    negated: bool = False     # "the bowl that is not on the shelf"
 
 
 @dataclass
@@ -216,7 +216,7 @@ class _Reader:
             return i  # "right below the sink": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
-            out.relations[-1].landmark_where = kind  # "near the plant in the corner": the plant's place
+            out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
             return i
         return self.landmark_relation(i, kind, nxt)
 
@@ -239,7 +239,7 @@ class _Reader:
                 self.landmark(rel, i)
             out.relations.append(rel)
             return i
-        if kind == "opposite":  # "across the table from the red chair": two landmarks, else one
+        if kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
             if self.landmark(rel, i):
                 frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
                 if frm is not None and self.landmark(rel, frm):
@@ -288,11 +288,11 @@ class _Reader:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
             out.attrs = self.attrs_before(target)
-        elif info.afford:  # "the seat closest to the tv", "something to light up the corner": what serves
+        elif info.afford:  # "the seat nearest the radio", "something to brighten the hallway": what serves
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
         elif info.unknown_target:
             out.unknown_target = True
-        # a size word on the target ("the small lamp on the side table") ranks within the relation
+        # a size word on the target ("the small vase on the dresser") ranks within the relation
         out.relations += [Relation("extreme", value=SIZE_EXTREMES[v]) for k, v in out.attrs
                           if k == "size" and v in SIZE_EXTREMES and out.relations
                           and not any(r.kind == "extreme" for r in out.relations)]

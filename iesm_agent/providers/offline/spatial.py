@@ -1,7 +1,7 @@
 """The offline model's spatial-relation expert (`prompts/spatial.j2`) and its gate weighting.
 
 It reads a referring expression ("the cup on the kitchen table", "the chair closest to the
-window", "the smaller of the two lamps", "facing the bed, the nightstand on the left") into a
+window", "the shorter of the two vases", "facing the sofa, the lamp on the right") into a
 target kind, colour/material words and relations to landmark categories, then scores the
 candidates of the target kind from the geometry fenced in the prompt (`center`, `size`,
 `z_range`, `on`, `under`), with landmarks found by category among the candidates and the
