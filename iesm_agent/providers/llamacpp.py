@@ -17,8 +17,9 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import IesmError, ProviderError
-from .base import Capabilities, ChatOptions, Completion, Message, Model, Usage
-from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError, MESSAGE_OVERHEAD_TOKENS
+from .base import (MESSAGE_OVERHEAD_TOKENS, Capabilities, ChatOptions, Completion, Message, Model, Usage,
+                   clean_text)
+from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError
 
 #: tokens of context the model is loaded with unless `context_window` says otherwise
 DEFAULT_N_CTX = 8192
@@ -97,7 +98,9 @@ class LlamaCppModel(Model):
             except (ValueError, RuntimeError) as exc:
                 raise ProviderError(f"llama.cpp failed: {exc}", self.name) from exc
         usage = reply.get("usage") or {}
-        return Completion(text=reply["choices"][0]["message"].get("content") or "", model=self.name,
+        choice = reply["choices"][0]
+        return Completion(text=clean_text(choice["message"].get("content") or ""), model=self.name,
                           usage=Usage(prompt_tokens=usage.get("prompt_tokens", 0),
                                       completion_tokens=usage.get("completion_tokens", 0)),
+                          truncated=choice.get("finish_reason") == "length",
                           latency_ms=(time.perf_counter() - started) * 1000.0)
