@@ -4,11 +4,15 @@ can be overridden alone (`expert_<name>.j2`)."""
 
 from __future__ import annotations
 
+import os
+
 import pytest
 
 from iesm_agent import contract
 from iesm_agent.evals.runner import make_variants
 from iesm_agent.prompting import PromptLibrary
+from iesm_agent.providers.base import Model
+from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.providers.offline.prompt import read_prompt
 from iesm_agent.resources import resource_dir
 from iesm_agent.retrieval import Retriever
@@ -23,10 +27,41 @@ VARS = dict(query="the lamp", experts=[], focus="x", hint="", candidates=[], ref
 @pytest.mark.parametrize("name, task", TEMPLATES.items())
 def test_every_retrieval_template_declares_its_task_and_reply_format(name, task):
     messages = PromptLibrary().render(name, **VARS)
-    system = messages[0].text()
-    assert system.splitlines()[0] == contract.task_line(task)
-    assert contract.reply_format(task, 3) in system
+    text = "\n".join(m.text() for m in messages)
+    assert text.count(contract.task_line(task)) == 1 and contract.task_line(task) in text.splitlines()
+    assert contract.reply_format(task, 3) in text
     assert read_prompt(messages).task == task
+
+
+class _Recorder(Model):
+    """The offline model, keeping every prompt it is sent (in the order the calls are made)."""
+
+    def __init__(self):
+        self.inner, self.seen = OfflineModel(use_embeddings=False), []
+        self.capabilities = self.inner.capabilities
+
+    async def acomplete(self, messages, options=None):
+        self.seen.append(messages)
+        return await self.inner.acomplete(messages, options)
+
+
+def test_the_six_prompts_of_a_query_share_one_byte_identical_prefix():
+    """Gate and five experts: the same system message, then a user message whose first part
+    (candidates, query) is identical; the task, focus and references come after it."""
+    model = _Recorder()
+    res = Retriever(MapStore(open_map("apartment")), provider=model).ask("the lamp next to the sofa")
+    assert len(model.seen) == 6 and not res.failures
+    systems = {m[0].text() for m in model.seen}
+    users = [m[1].text() for m in model.seen]
+    assert len(systems) == 1 and all(m[0].role == "system" for m in model.seen)
+    shared = os.path.commonprefix(users)
+    assert shared.count("</query>") == 1 and shared.split("</query>")[1].strip() in ("", "Task:")
+    assert shared.count("<candidates>") == 1 and '"center"' in shared and '"alt_labels"' in shared
+    head = shared[:shared.index("</query>")]
+    assert sorted(contract.read_task(u[len(head):]) for u in users) == sorted(
+        [contract.GATE] + [contract.RANK] * 4 + [contract.RANK_GEOMETRY])
+    # what differs is short next to what is shared (a server's prompt cache reads the rest once)
+    assert max(len(u) - len(shared) for u in users) < 0.5 * len(shared)
 
 
 def test_a_user_template_without_a_task_line_is_read_from_its_reply_format(tmp_path):

@@ -113,7 +113,9 @@ async def test_unknown_window_and_user_setting():
         set_by_user = OpenAICompatModel("other", base_url=server.base_url, context_window=1000)
         assert await set_by_user.aprompt_limit() == 488 and set_by_user.facts.window_source == "setting"
         await set_by_user.aclose()
-    assert probes == 2 and len(server.probes) == 2  # /v1/models and /props once; none for a setting
+    # /v1/models and /props once per endpoint; a window set by the user is kept (the probe
+    # still asks for the server's slots)
+    assert probes == 2 and len(server.probes) == 4 and set_by_user.facts.window == 1000
 
 
 async def test_prompt_over_a_known_window_is_never_sent():

@@ -53,7 +53,7 @@ async def test_round_trip_body_usage_and_counters():
     assert server.requests[0].headers["authorization"] == "Bearer sk-test"
     assert "max_tokens" not in server.requests[1].body
     assert model.stats() == {"calls": 2, "retries": 0, "failures": 0,
-                             "prompt_tokens": 22, "completion_tokens": 6}
+                             "prompt_tokens": 22, "cached_tokens": 0, "completion_tokens": 6}
 
 
 async def test_images_travel_as_data_urls():

@@ -1,11 +1,12 @@
 """Client for OpenAI-compatible chat-completions servers (OpenAI, vLLM, Ollama's /v1,
 llama.cpp server, LM Studio) on one `httpx.AsyncClient` per model instance.
 
-Bounds (a misbehaving server costs at most these): every call ends within `timeout` seconds,
-retries, waits for a free slot and `Retry-After` included; a reply body is read up to
-`MAX_REPLY_BYTES` as sent and as inflated; after a call ran out of time the endpoint is not asked
-again for `timeout` seconds (later calls fail at once), so a stalled server ends a run of
-calls one at a time within one `timeout` too. Reply text is cleaned of lone surrogates.
+Bounds (a misbehaving server costs at most these): every call ends within its `deadline`
+(default `DEFAULT_DEADLINE_S`, or `timeout` when longer), retries, waits for a free slot and
+`Retry-After` included; a reply body is read up to `MAX_REPLY_BYTES` as sent and as inflated;
+after a call ran out of time the endpoint is not asked again for one `deadline` (later calls
+fail at once), so a stalled server ends a run of calls one at a time within one deadline too.
+Reply text is cleaned of lone surrogates.
 
 Failure policy (each raises `ProviderError` naming the endpoint once retries are spent):
 * retried with exponential backoff and full jitter (or the server's `Retry-After`, capped and
@@ -48,6 +49,8 @@ from .endpoint import (REPLY_RESERVE_TOKENS, ContextOverflowError, Dialect, cont
 RETRYABLE_STATUS = frozenset({408, 409, 429, 500, 502, 503, 504, 520, 521, 522, 523, 524, 529})
 #: largest reply body read (bytes), as sent and after decompression
 MAX_REPLY_BYTES = 8 * 1024 * 1024
+#: seconds within which a call ends, whatever the server does (unless `timeout` is longer)
+DEFAULT_DEADLINE_S = 60.0
 
 
 class DialectRejected(ProviderError):
@@ -120,8 +123,8 @@ class Reply:
 class OpenAICompatModel(Model):
     """A chat model behind `{base_url}/chat/completions`.
 
-    `timeout` (s) bounds each call as a whole (retries, waits and slots included) and each
-    read/write in it; `connect_timeout` (s, default min(timeout, 10)) the connection;
+    `timeout` (s) bounds each read/write, `deadline` (s) each call as a whole (retries, waits
+    and slots included); `connect_timeout` (s, default min(timeout, 10)) the connection;
     `max_retries` retries follow the first attempt; at most `concurrency` requests of this
     instance are in flight at once (fewer when the server has fewer slots). `context_window`
     (tokens) overrides what the server says; `probe_window=False` skips asking it (window and
@@ -134,7 +137,8 @@ class OpenAICompatModel(Model):
                  connect_timeout: float | None = None, max_retries: int = 4, concurrency: int = 8,
                  vision: bool = False, backoff_s: float = 0.5, backoff_max_s: float = 30.0,
                  retry_after_max_s: float = 60.0, key_hint: str | None = None,
-                 context_window: int | None = None, probe_window: bool = True):
+                 context_window: int | None = None, probe_window: bool = True,
+                 deadline: float | None = None):
         source = f"{provider}:{model}"
         if not model:
             raise IesmError("model name is empty", source)
@@ -142,6 +146,8 @@ class OpenAICompatModel(Model):
             raise IesmError(f"base_url must be an http(s) URL, got {base_url!r}", source, "base_url")
         if not timeout > 0:
             raise IesmError(f"timeout must be > 0 s, got {timeout}", source, "timeout")
+        if deadline is not None and not deadline > 0:
+            raise IesmError(f"deadline must be > 0 s, got {deadline}", source, "deadline")
         if max_retries < 0:
             raise IesmError(f"max_retries must be >= 0, got {max_retries}", source, "max_retries")
         if concurrency < 1:
@@ -155,6 +161,7 @@ class OpenAICompatModel(Model):
         self.endpoint = f"{self.base_url}/chat/completions"
         self.capabilities = Capabilities(vision=vision, json_schema=True)
         self.timeout = float(timeout)
+        self.deadline = float(deadline) if deadline else max(DEFAULT_DEADLINE_S, self.timeout)
         self.connect_timeout = float(connect_timeout) if connect_timeout else min(self.timeout, 10.0)
         self.max_retries = int(max_retries)
         self.concurrency = int(concurrency)
@@ -204,14 +211,14 @@ class OpenAICompatModel(Model):
 
     async def _probe_once(self) -> None:
         """Ask the server for its window and slots, once per endpoint and process (the other
-        calls wait for it); within `timeout`."""
+        calls wait for it); within the call's deadline."""
         if not self.probe_window or self.facts.probed:
             return
         client, _ = self._session()
         async with self.facts.lock():
             if not self.facts.probed:
                 try:
-                    async with asyncio.timeout(self.timeout):
+                    async with asyncio.timeout(self.deadline):
                         await self._probe_window(client)
                 except TimeoutError:
                     pass
@@ -265,14 +272,14 @@ class OpenAICompatModel(Model):
         options = options or ChatOptions()
         self.calls += 1
         started = time.perf_counter()
-        deadline = time.monotonic() + self.timeout
+        deadline = time.monotonic() + self.deadline
         notes: list[str] = []
         try:
             stalled = self.facts.stalled_reason()
             if stalled:
                 raise ProviderError(f"not sent: {stalled}", self.endpoint)
             try:
-                async with asyncio.timeout(self.timeout):
+                async with asyncio.timeout(self.deadline):
                     self._check_fits(messages, options, await self.aprompt_limit(options))
                     if options.json_schema is not None and not self.facts.negotiated:
                         async with self.facts.lock():  # the first call negotiates, the others wait
@@ -280,8 +287,8 @@ class OpenAICompatModel(Model):
                     else:
                         reply = await self._attempts(messages, options, deadline, notes)
             except TimeoutError:
-                self.facts.stall(f"a call got no reply within its {self.timeout:g} s deadline", self.timeout)
-                raise ProviderError(f"no complete reply within the {self.timeout:g} s deadline of a "
+                self.facts.stall(f"a call got no reply within its {self.deadline:g} s deadline", self.deadline)
+                raise ProviderError(f"no complete reply within the {self.deadline:g} s deadline of a "
                                     f"call (waits and retries included)", self.endpoint) from None
         except ProviderError:
             self.failures += 1
@@ -329,7 +336,7 @@ class OpenAICompatModel(Model):
                 wait = self._backoff(attempt + 1, exc.retry_after)
                 if time.monotonic() + wait >= deadline:
                     exc.message += (f" (a retry after {wait:.3g} s would end past the call's "
-                                    f"{self.timeout:g} s deadline; not retried)")
+                                    f"{self.deadline:g} s deadline; not retried)")
                     raise
                 attempt += 1
                 self.retries += 1
