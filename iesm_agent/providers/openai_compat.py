@@ -57,6 +57,10 @@ class DialectRejected(ProviderError):
     """The server refused the structured-output dialect of the request (see `endpoint.py`)."""
 
 
+class DeadlineExceeded(ProviderError):
+    """A request's answer was not complete by its deadline (a trickling or stalled server)."""
+
+
 class _ReplyMessage(BaseModel):
     content: Optional[Union[str, list[dict[str, Any]]]] = None
     refusal: Optional[str] = None
@@ -286,7 +290,7 @@ class OpenAICompatModel(Model):
                             reply = await self._attempts(messages, options, deadline, notes)
                     else:
                         reply = await self._attempts(messages, options, deadline, notes)
-            except TimeoutError:
+            except (TimeoutError, DeadlineExceeded):
                 self.facts.stall(f"a call got no reply within its {self.deadline:g} s deadline", self.deadline)
                 raise ProviderError(f"no complete reply within the {self.deadline:g} s deadline of a "
                                     f"call (waits and retries included)", self.endpoint) from None
@@ -473,7 +477,7 @@ async def _request(client: httpx.AsyncClient, method: str, url: str, deadline: f
     kwargs.setdefault("timeout", httpx.Timeout(min(timeout.read or left, left),
                                                connect=min(timeout.connect or left, left)))
     try:
-        async with client.stream(method, url, **kwargs) as response:
+        async with asyncio.timeout(left), client.stream(method, url, **kwargs) as response:
             declared = response.headers.get("content-length", "")
             if declared.isdigit() and int(declared) > MAX_REPLY_BYTES:
                 raise ProviderError(f"reply of {int(declared)} bytes refused (at most {MAX_REPLY_BYTES})",
@@ -486,6 +490,8 @@ async def _request(client: httpx.AsyncClient, method: str, url: str, deadline: f
                                         "not read further", url, status=response.status_code)
                 chunks.append(chunk)
             return HttpReply(response.status_code, response.headers, b"".join(chunks))
+    except TimeoutError:
+        raise DeadlineExceeded(f"no complete answer within {left:.3g} s", url) from None
     except httpx.TimeoutException as exc:
         raise ProviderError(f"no reply within the {min(timeout.read or left, left):.3g} s timeout "
                             f"({type(exc).__name__})", url, retryable=True) from exc
