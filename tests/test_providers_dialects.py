@@ -8,7 +8,7 @@ import pytest
 from iesm_agent.errors import ProviderError
 from iesm_agent.providers import ChatOptions, FunctionModel, Message, get_model
 from iesm_agent.providers.endpoint import ContextOverflowError, context_error, estimate_tokens
-from iesm_agent.providers.loopback import LoopbackServer, count_tokens
+from loopback import LoopbackServer, count_tokens
 from iesm_agent.providers.ollama import DEFAULT_NUM_CTX, OllamaModel
 from iesm_agent.providers.openai_compat import OpenAICompatModel
 

@@ -15,7 +15,7 @@ import pytest
 from iesm_agent.errors import ProviderError
 from iesm_agent.providers import ChatOptions, FunctionModel, ImagePart, Message, TextPart
 from iesm_agent.providers.jsonreply import JsonReplyError, parse_json_reply
-from iesm_agent.providers.loopback import Fault, LoopbackServer
+from loopback import Fault, LoopbackServer
 from iesm_agent.providers.openai_compat import OpenAICompatModel, parse_retry_after
 
 USER = [Message(role="system", content="be brief"), Message(role="user", content="where is the mug?")]

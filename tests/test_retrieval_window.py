@@ -6,7 +6,7 @@ import pytest
 
 from iesm_agent.config import RetrievalConfig
 from iesm_agent.providers import get_model
-from iesm_agent.providers.loopback import LoopbackServer
+from loopback import LoopbackServer
 from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.retrieval import Retriever
 
