@@ -208,6 +208,10 @@ class OpenAICompatModel(Model):
         """Tokens a prompt may take: the window (asked of the server once) less the reply's
         `max_tokens` (`REPLY_RESERVE_TOKENS` when unset); None when the window is unknown."""
         await self._probe_once()
+        return self._limit(options)
+
+    def _limit(self, options: ChatOptions | None) -> int | None:
+        """`aprompt_limit` from what is known now (no probe)."""
         if self.facts.window is None:
             return None
         reserve = (options.max_tokens if options and options.max_tokens else REPLY_RESERVE_TOKENS)
@@ -284,11 +288,17 @@ class OpenAICompatModel(Model):
                 raise ProviderError(f"not sent: {stalled}", self.endpoint)
             try:
                 async with asyncio.timeout(self.deadline):
-                    self._check_fits(messages, options, await self.aprompt_limit(options))
-                    if options.json_schema is not None and not self.facts.negotiated:
-                        async with self.facts.lock():  # the first call negotiates, the others wait
-                            reply = await self._attempts(messages, options, deadline, notes)
-                    else:
+                    await self._probe_once()
+                    reply = None
+                    if not self.facts.negotiated:
+                        # the first call negotiates dialect and window; the others wait for it,
+                        # then go at once, checked against what it learnt
+                        async with self.facts.lock():
+                            if not self.facts.negotiated:
+                                self._check_fits(messages, options, self._limit(options))
+                                reply = await self._attempts(messages, options, deadline, notes)
+                    if reply is None:
+                        self._check_fits(messages, options, self._limit(options))
                         reply = await self._attempts(messages, options, deadline, notes)
             except (TimeoutError, DeadlineExceeded):
                 self.facts.stall(f"a call got no reply within its {self.deadline:g} s deadline", self.deadline)
@@ -318,7 +328,7 @@ class OpenAICompatModel(Model):
                 async with semaphore:
                     reply = await self._post(client, self._body(messages, options, dialect),
                                              structured=dialect != "prompt", deadline=deadline)
-                self.facts.negotiated |= options.json_schema is not None
+                self.facts.negotiated = True
                 return reply
             except DialectRejected as exc:
                 moved = self.facts.demote(dialect, exc.message)
@@ -327,12 +337,11 @@ class OpenAICompatModel(Model):
                 if moved:
                     continue
                 raise
-            except ContextOverflowError as exc:
-                self.facts.negotiated = True
+            except ContextOverflowError as exc:  # the window is learnt, the dialect not yet
                 self.facts.observe(messages, exc.prompt_tokens)
                 raise
             except ProviderError as exc:
-                self.facts.negotiated |= exc.status is not None
+                self.facts.negotiated |= exc.status is not None  # answered: not a refusal of the dialect
                 if not exc.retryable or attempt >= self.max_retries:
                     if attempt:
                         exc.message += f" (gave up after {attempt + 1} attempts)"
