@@ -65,7 +65,8 @@ class RetrievalConfig(BaseModel):
     kappa: int = Field(2, ge=1)
     gamma: float = Field(0.75, ge=0, le=1)
     mu: float = Field(16.0, ge=0)
-    max_candidates: int = Field(100, ge=1)
+    #: None: the model's own budget (`Model.candidate_budget`)
+    max_candidates: Optional[int] = Field(None, ge=1)
     skip_below: Optional[float] = Field(None, ge=0, le=1)
     deadline_s: float = Field(60.0, gt=0)
 

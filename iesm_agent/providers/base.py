@@ -124,6 +124,16 @@ def estimate_tokens(messages: list[Message],
             + MESSAGE_OVERHEAD_TOKENS * len(messages) + IMAGE_TOKENS * images)
 
 
+#: candidates sent to a model that reads prompts for nothing (the offline model): the paper's G
+PAPER_CANDIDATES = 100
+#: candidates sent to an LLM endpoint, whose prompt tokens cost time: the cheap pre-ranking
+#: (`retrieval.candidates`) keeps an accepted instance among its first 15 for all 620 queries of
+#: the shipped suites (0.990 at 10), and the offline model's predictions on them are the same at
+#: 20 as at 100 (benchmarks/results.md); Gemma 3 270M on two cores reads a 56-candidate MTEFR
+#: prefix (~7,500 tokens) in minutes, a 20-candidate one in well under one
+LLM_CANDIDATES = 20
+
+
 class Model(ABC):
     """One chat model. Subclasses implement `acomplete`; `complete` is its sync twin."""
 
@@ -133,6 +143,8 @@ class Model(ABC):
     #: whether a response cache pays off (False for models that answer locally faster than a
     #: cache lookup, such as the offline model); `get_model` never wraps those in a cache
     cacheable: bool = True
+    #: candidates a query sends to this model unless the user sets `max_candidates`
+    candidate_budget: int = PAPER_CANDIDATES
 
     @abstractmethod
     async def acomplete(self, messages: list[Message], options: ChatOptions | None = None) -> Completion:
@@ -175,6 +187,7 @@ class WrappedModel(Model):
         self.name = inner.name
         self.capabilities = inner.capabilities
         self.cacheable = inner.cacheable
+        self.candidate_budget = inner.candidate_budget
 
     def cache_identity(self) -> dict[str, Any]:
         return self.inner.cache_identity()

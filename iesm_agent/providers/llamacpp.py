@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import IesmError, ProviderError
-from .base import (MESSAGE_OVERHEAD_TOKENS, Capabilities, ChatOptions, Completion, Message, Model, Usage,
+from .base import (LLM_CANDIDATES, MESSAGE_OVERHEAD_TOKENS, Capabilities, ChatOptions, Completion, Message, Model, Usage,
                    clean_text)
 from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError
 
@@ -29,6 +29,8 @@ class LlamaCppModel(Model):
     """The GGUF file `path` loaded once (on the first call, seconds) with `context_window`
     tokens of context and `threads` CPU threads (default: all). Calls run one at a time on a
     worker thread."""
+
+    candidate_budget = LLM_CANDIDATES
 
     def __init__(self, path: str | Path, *, context_window: int | None = None, threads: int | None = None,
                  seed: int = 0):

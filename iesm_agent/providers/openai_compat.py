@@ -42,7 +42,7 @@ import httpx
 from pydantic import BaseModel, Field, ValidationError
 
 from ..errors import IesmError, ProviderError
-from .base import Capabilities, ChatOptions, Completion, ImagePart, Message, Model, Usage, clean_text
+from .base import LLM_CANDIDATES, Capabilities, ChatOptions, Completion, ImagePart, Message, Model, Usage, clean_text
 from .endpoint import (REPLY_RESERVE_TOKENS, ContextOverflowError, Dialect, context_error,
                        facts_for, is_rejection, response_format)
 
@@ -125,7 +125,7 @@ class Reply:
 
 
 class OpenAICompatModel(Model):
-    """A chat model behind `{base_url}/chat/completions`.
+    """A chat model behind `{base_url}/chat/completions` (`candidate_budget`: `LLM_CANDIDATES`).
 
     `timeout` (s) bounds each read/write, `deadline` (s) each call as a whole (retries, waits
     and slots included); `connect_timeout` (s, default min(timeout, 10)) the connection;
@@ -183,6 +183,8 @@ class OpenAICompatModel(Model):
         self._semaphore: asyncio.Semaphore | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
         self._ssl: ssl.SSLContext | None = None
+
+    candidate_budget = LLM_CANDIDATES
 
     def __repr__(self) -> str:
         return f"OpenAICompatModel({self.name!r}, base_url={self.base_url!r})"

@@ -59,6 +59,8 @@ class Retriever:
         self.runner = resolve_method(method, self.registry)
         self.method = self.runner.name
         self.model = get_model(provider, cache=cache)
+        if self.config.max_candidates is None:  # the model's own budget
+            self.config = self.config.model_copy(update={"max_candidates": self.model.candidate_budget})
         self._views: dict[tuple[str, ...], dict[int, Fenced]] = {}
         self._template_hashes: dict[str, str] = {}
 
