@@ -33,7 +33,7 @@ def ask_command(
     max_concurrency: int = typer.Option(8, "--max-concurrency", help="Model requests in flight at once (fewer when "
                                         "the server reports fewer slots)."),
     deadline: float | None = typer.Option(None, "--deadline", help="Seconds within which every model call of the "
-                                          "query ends (default 60)."),
+                                          "query ends, and one request may wait (default 60)."),
 ) -> None:
     """Retrieve the map instance QUERY refers to (MTEFR by default)."""
     from ..config import load_settings
@@ -49,8 +49,9 @@ def ask_command(
     store = open_store(map_ref)
     overrides = {"retrieval.kappa": kappa, "retrieval.max_candidates": max_candidates, "retrieval.deadline_s": deadline}
     config = load_settings(None, {k: v for k, v in overrides.items() if v is not None}).retrieval
+    # a deadline also lets one request wait that long (a local server reading a long prompt)
     model = get_model(provider, base_url=base_url, cache=not no_cache, concurrency=max_concurrency,
-                      **({"deadline": deadline} if deadline is not None else {}))
+                      **({"deadline": deadline, "timeout": deadline} if deadline is not None else {}))
     retriever = Retriever(store, provider=model, method=method, config=config, prompts_dir=prompts,
                           experts_dirs=experts_dir)
 

@@ -231,8 +231,8 @@ def _build_model(config: RunConfig) -> Model:
     from ..providers import get_model
 
     opts = {"concurrency": config.max_concurrency} if config.max_concurrency else {}
-    if config.deadline_s:
-        opts["deadline"] = config.deadline_s
+    if config.deadline_s:  # a deadline also lets one request wait that long
+        opts["deadline"] = opts["timeout"] = config.deadline_s
     return get_model(config.provider, base_url=config.base_url, cache=config.cache, **opts)
 
 

@@ -128,9 +128,10 @@ def estimate_tokens(messages: list[Message],
 PAPER_CANDIDATES = 100
 #: candidates sent to an LLM endpoint, whose prompt tokens cost time: the cheap pre-ranking
 #: (`retrieval.candidates`) keeps an accepted instance among its first 15 for all 620 queries of
-#: the shipped suites (0.990 at 10), and the offline model's predictions on them are the same at
-#: 20 as at 100 (benchmarks/results.md); Gemma 3 270M on two cores reads a 56-candidate MTEFR
-#: prefix (~7,500 tokens) in minutes, a 20-candidate one in well under one
+#: the shipped suites (0.990 at 10; `python benchmarks/candidate_budget.py`), and the offline
+#: model predicts the same instance for each of them at 20 as at 100 (`iesm eval evals/*.jsonl
+#: -m mtefr,spr --max-candidates 20`); Gemma 3 270M on two loaded cores read a 56-candidate MTEFR
+#: prefix (8,172 tokens) in 264 s
 LLM_CANDIDATES = 20
 
 
