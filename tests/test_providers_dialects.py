@@ -2,6 +2,8 @@
 each real server (vLLM, LM Studio, llama-cpp-python, llama.cpp, Ollama): what is sent, what is
 remembered, what is never sent."""
 
+import json
+
 import httpx
 import pytest
 
@@ -229,3 +231,19 @@ def test_one_query_negotiates_once_and_its_trace_says_why():
     assert "response_format" in noted[0].notes[0] or "json_schema" in noted[0].notes[0].split("(", 1)[1]
     assert any("sent again as json_object" in n for n in res.notes)
     assert all(c.max_tokens and 0 < c.max_tokens <= 300 for c in res.calls)
+
+
+def test_string_lengths_bound_the_reply_but_are_not_sent():
+    """`maxLength` sets the reply's `max_tokens` and the validator's cut, but is left out of the
+    schema on the wire (grammar engines sample far slower inside a length-bounded string)."""
+    from iesm_agent import contract
+
+    schema = contract.ranking_schema(2)
+    assert schema["properties"]["abstain"]["maxLength"] == contract.ABSTAIN_CHARS
+    seen = []
+    with LoopbackServer(FunctionModel(schema_echo(seen)), flavour="llama-cpp-python") as server:
+        model = client(server)
+        model.complete(SHORT, ChatOptions(json_schema=schema, max_tokens=contract.max_reply_tokens(schema)))
+    sent = [r.body for r in server.requests if "response_format" in r.body][-1]
+    assert "maxLength" not in json.dumps(sent) and sent["max_tokens"] == contract.max_reply_tokens(schema)
+    assert sent["response_format"]["schema"]["properties"]["ranked_instance_ids"]["maxItems"] == 2

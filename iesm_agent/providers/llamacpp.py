@@ -19,7 +19,7 @@ from typing import Any
 from ..errors import IesmError, ProviderError
 from .base import (LLM_CANDIDATES, MESSAGE_OVERHEAD_TOKENS, Capabilities, ChatOptions, Completion, Message, Model, Usage,
                    clean_text)
-from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError
+from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError, wire_schema
 
 #: tokens of context the model is loaded with unless `context_window` says otherwise
 DEFAULT_N_CTX = 8192
@@ -93,7 +93,7 @@ class LlamaCppModel(Model):
             if options.seed is not None:
                 kwargs["seed"] = options.seed
             if options.json_schema is not None:
-                kwargs["response_format"] = {"type": "json_object", "schema": options.json_schema}
+                kwargs["response_format"] = {"type": "json_object", "schema": wire_schema(options.json_schema)}
             try:
                 reply = llama.create_chat_completion(
                     messages=[{"role": m.role, "content": m.text()} for m in messages], **kwargs)

@@ -21,7 +21,7 @@ from pydantic import BaseModel, ValidationError
 
 from ..errors import ProviderError
 from .base import ChatOptions, ImagePart, Message, Usage, clean_text
-from .endpoint import Dialect
+from .endpoint import Dialect, wire_schema
 from .openai_compat import HttpReply, OpenAICompatModel, Reply, _request
 
 OLLAMA_ROOT = "http://localhost:11434"
@@ -82,7 +82,7 @@ class OllamaModel(OpenAICompatModel):
         if options.seed is not None:
             body["options"]["seed"] = options.seed
         if options.json_schema is not None and dialect != "prompt":
-            body["format"] = options.json_schema if dialect == "json_schema" else "json"
+            body["format"] = wire_schema(options.json_schema) if dialect == "json_schema" else "json"
         return body
 
     def _parse(self, answer: HttpReply) -> Reply:
