@@ -41,6 +41,11 @@ def check_query(query: str) -> str:
     if len(query) > MAX_QUERY_CHARS:
         raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
                         None, "query")
+    try:
+        query.encode("utf-8")
+    except UnicodeEncodeError as exc:  # bytes that are not UTF-8 (from argv) or lone surrogates
+        raise IesmError(f"the query is not valid text (character {exc.start + 1} cannot be encoded)",
+                        None, "query") from None
     return query
 
 
