@@ -138,14 +138,18 @@ def _schema(kind: type[BaseModel]) -> dict[str, Any]:
 
 
 def gate_schema(experts: Sequence[str] = ()) -> dict[str, Any]:
-    """JSON schema of a gate reply; with `experts`, every one of them must be scored and only
-    they may get hints."""
+    """JSON schema of a gate reply; with `experts`, every one of them gets a score and a hint
+    (which may be empty), in that order: a grammar with no optional key is a straight line
+    (llama-cpp-python sampled a gate reply with five optional hints at 0.57 tokens/s, 1.8 s a
+    token, against 41 ms for an expert's reply)."""
     schema = _schema(GateReply)
     if experts:
-        for key, required in (("scores", list(experts)), ("hints", [])):
+        for key in ("scores", "hints"):
             value = schema["properties"][key].pop("additionalProperties")
-            schema["properties"][key].update(properties=dict.fromkeys(experts, value), required=required,
+            schema["properties"][key].update(properties=dict.fromkeys(experts, value), required=list(experts),
                                              additionalProperties=False)
+            schema["properties"][key].pop("default", None)
+        schema["required"] = ["scores", "hints"]
     return schema
 
 
