@@ -4,6 +4,7 @@ can be overridden alone (`expert_<name>.j2`)."""
 
 from __future__ import annotations
 
+import json
 import os
 
 import pytest
@@ -93,3 +94,23 @@ def test_prompts_default_names_the_shipped_templates(tmp_path):
     variants = make_variants(["mtefr"], ["default", tmp_path])
     assert [(v.name, v.prompts_dir) for v in variants] == [("mtefr@default", None),
                                                             (f"mtefr@{tmp_path.name}", str(tmp_path))]
+
+
+def test_each_reply_kind_is_one_model_giving_schema_validation_and_bound():
+    names = ["obj", "room"]
+    gate = contract.gate_schema(names)
+    # every key required: a grammar-constrained server gets a straight-line grammar
+    assert gate["required"] == ["scores", "hints"]
+    assert all(gate["properties"][k]["required"] == names for k in ("scores", "hints"))
+    # the same model reads a reply leniently: numeric strings, over-long hints cut to the schema's bound
+    reply = contract.GateReply.model_validate({"scores": {"obj": "3", "room": True},
+                                               "hints": {"obj": "x" * 500, "room": 7}})
+    assert reply.scores == {"obj": 3.0, "room": None} and reply.hints == {"obj": "x" * contract.HINT_CHARS}
+    # the bound: the longest reply the schema allows, at 2 characters a token or better
+    longest = json.dumps({"scores": dict.fromkeys(names, 4), "hints": dict.fromkeys(names, "x" * contract.HINT_CHARS)})
+    assert len(longest) / 2 <= contract.max_reply_tokens(gate) < len(longest)
+    ranking = contract.ranking_schema(3)
+    assert ranking["properties"][contract.RANKING_KEY]["maxItems"] == 3
+    assert contract.max_reply_tokens(contract.ranking_schema(1)) < contract.max_reply_tokens(ranking)
+    with pytest.raises(ValueError, match="neither 'object' nor 'room'"):
+        contract.KeywordReply.model_validate({"thing": "mug"})
