@@ -247,3 +247,12 @@ def test_string_lengths_bound_the_reply_but_are_not_sent():
     sent = [r.body for r in server.requests if "response_format" in r.body][-1]
     assert "maxLength" not in json.dumps(sent) and sent["max_tokens"] == contract.max_reply_tokens(schema)
     assert sent["response_format"]["schema"]["properties"]["ranked_instance_ids"]["maxItems"] == 2
+
+
+def test_a_dialect_set_by_the_user_is_not_negotiated():
+    with LoopbackServer(FunctionModel(lambda m, o: '{"ranked_instance_ids": [1]}'), flavour="vllm") as server:
+        model = client(server, dialect="prompt")
+        model.complete(SHORT, ChatOptions(json_schema=SCHEMA, max_tokens=20))
+    assert formats(server) == [(None, 200)] and server.requests[0].body["max_tokens"] == 20
+    with pytest.raises(ProviderError.__mro__[1], match="dialect must be one of"):
+        client(server, dialect="xml")

@@ -32,6 +32,8 @@ def ask_command(
                                               "(the best by a cheap pre-ranking; default 100)."),
     max_concurrency: int = typer.Option(8, "--max-concurrency", help="Model requests in flight at once (fewer when "
                                         "the server reports fewer slots)."),
+    dialect: str | None = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object or "
+                                       "prompt (no grammar) instead of negotiating it (HTTP providers)."),
     deadline: float | None = typer.Option(None, "--deadline", help="Seconds within which every model call of the "
                                           "query ends, and one request may wait (default 60)."),
 ) -> None:
@@ -50,8 +52,9 @@ def ask_command(
     overrides = {"retrieval.kappa": kappa, "retrieval.max_candidates": max_candidates, "retrieval.deadline_s": deadline}
     config = load_settings(None, {k: v for k, v in overrides.items() if v is not None}).retrieval
     # a deadline also lets one request wait that long (a local server reading a long prompt)
+    opts = {"deadline": deadline, "timeout": deadline} if deadline is not None else {}
     model = get_model(provider, base_url=base_url, cache=not no_cache, concurrency=max_concurrency,
-                      **({"deadline": deadline, "timeout": deadline} if deadline is not None else {}))
+                      **opts, **({"dialect": dialect} if dialect else {}))
     retriever = Retriever(store, provider=model, method=method, config=config, prompts_dir=prompts,
                           experts_dirs=experts_dir)
 

@@ -39,6 +39,8 @@ def eval_command(
                                                  "most (the best by a cheap pre-ranking; default 100)."),
     max_concurrency: Optional[int] = typer.Option(None, "--max-concurrency", help="Model requests in flight at "
                                                   "once (default 8; fewer when the server reports fewer slots)."),
+    dialect: Optional[str] = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object "
+                                          "or prompt (no grammar) instead of negotiating it (HTTP providers)."),
     deadline: Optional[float] = typer.Option(None, "--deadline", help="Seconds within which every model call of "
                                              "one query ends (default 60)."),
 ) -> None:
@@ -51,7 +53,7 @@ def eval_command(
     cache = not no_cache
     config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
                          experts_dirs=experts_dir, gt=gt, max_candidates=max_candidates, deadline_s=deadline,
-                         max_concurrency=max_concurrency)
+                         max_concurrency=max_concurrency, dialect=dialect)
     config.retrieval_config()  # bad values refused before anything runs
     if max_concurrency is not None and max_concurrency < 1:
         from ..errors import IesmError

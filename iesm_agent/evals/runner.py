@@ -61,6 +61,8 @@ class RunConfig(BaseModel):
     deadline_s: Optional[float] = None
     #: model requests in flight at once (None: the provider's default)
     max_concurrency: Optional[int] = None
+    #: structured-output dialect instead of a negotiated one (None: negotiated)
+    dialect: Optional[str] = None
 
     def retrieval_config(self):
         """The `RetrievalConfig` of this run."""
@@ -114,7 +116,8 @@ def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Var
 def make_config(suite_paths: list[str | Path], variants: list[Variant], provider: str, *,
                 base_url: str | None = None, cache: bool = False, skip_invalid: bool = False,
                 experts_dirs: list[str | Path] = (), gt: list[str] = (), max_candidates: int | None = None,
-                deadline_s: float | None = None, max_concurrency: int | None = None) -> RunConfig:
+                deadline_s: float | None = None, max_concurrency: int | None = None,
+                dialect: str | None = None) -> RunConfig:
     paths = [Path(p).resolve() for p in suite_paths]
     digest = hashlib.sha256()
     for path in paths:
@@ -126,7 +129,8 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
                      provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
                      experts_dirs=[str(Path(d).resolve()) for d in experts_dirs], gt=[_resolve_gt(g) for g in gt],
                      prompt_hashes={v.name: template_hashes(v.prompts_dir) for v in variants},
-                     max_candidates=max_candidates, deadline_s=deadline_s, max_concurrency=max_concurrency)
+                     max_candidates=max_candidates, deadline_s=deadline_s, max_concurrency=max_concurrency,
+                     dialect=dialect)
 
 
 def _resolve_gt(spec: str) -> str:
@@ -231,6 +235,8 @@ def _build_model(config: RunConfig) -> Model:
     from ..providers import get_model
 
     opts = {"concurrency": config.max_concurrency} if config.max_concurrency else {}
+    if config.dialect:
+        opts["dialect"] = config.dialect
     if config.deadline_s:  # a deadline also lets one request wait that long
         opts["deadline"] = opts["timeout"] = config.deadline_s
     return get_model(config.provider, base_url=config.base_url, cache=config.cache, **opts)
