@@ -29,7 +29,7 @@ def ask_command(
     experts_dir: list[Path] = typer.Option([], "--experts-dir", help="Extra expert spec directory (repeatable)."),
     prompts: Path | None = typer.Option(None, "--prompts", help="Prompt directory overriding shipped templates."),
     max_candidates: int | None = typer.Option(None, "--max-candidates", help="Candidates sent to the model at most "
-                                              "(the best by a cheap pre-ranking; default 100)."),
+                                              "(the best by a cheap pre-ranking; default 20 for LLM endpoints, 100 offline)."),
     max_concurrency: int = typer.Option(8, "--max-concurrency", help="Model requests in flight at once (fewer when "
                                         "the server reports fewer slots)."),
     dialect: str | None = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object or "

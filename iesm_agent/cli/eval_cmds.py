@@ -36,13 +36,14 @@ def eval_command(
     keep_prompts: bool = typer.Option(False, "--keep-prompts", help="Keep every rendered prompt and raw reply in "
                                                                     "results.jsonl (shown in report.html)."),
     max_candidates: Optional[int] = typer.Option(None, "--max-candidates", help="Candidates sent to the model at "
-                                                 "most (the best by a cheap pre-ranking; default 100)."),
+                                                 "most (the best by a cheap pre-ranking; default 20 for LLM "
+                                                 "endpoints, 100 offline)."),
     max_concurrency: Optional[int] = typer.Option(None, "--max-concurrency", help="Model requests in flight at "
                                                   "once (default 8; fewer when the server reports fewer slots)."),
     dialect: Optional[str] = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object "
                                           "or prompt (no grammar) instead of negotiating it (HTTP providers)."),
     deadline: Optional[float] = typer.Option(None, "--deadline", help="Seconds within which every model call of "
-                                             "one query ends (default 60)."),
+                                             "one query ends, and one request may wait (default 60)."),
 ) -> None:
     """Evaluate retrieval methods on query suites: O-SR per query type, MRR, top-3, significance."""
     from ..evals.metrics import parse_thresholds, threshold_failures
