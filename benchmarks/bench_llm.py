@@ -124,10 +124,14 @@ def main() -> None:
                                      *common, env=env)
                 spr_tokens = evaluated_tokens(log, since)
                 mtefr_tokens = evaluated_tokens(log, 0) - spr_tokens
+                ratio = mtefr_tokens / max(spr_tokens, 1)
                 print(f"ask SPR: {spr_wall:.1f} s; prompt tokens evaluated: MTEFR {mtefr_tokens}, SPR {spr_tokens} "
-                      f"= {mtefr_tokens / max(spr_tokens, 1):.2f}x; {load()}")
+                      f"= {ratio:.2f}x; {load()}")
                 within = calls_within_bounds(result["calls"]) and calls_within_bounds(json.loads(spr.stdout)["calls"])
                 print(f"completions within their bounds: {within}")
+                record("llm_prompt_tokens_mtefr_vs_spr", ratio, "x", "<= 2x SPR's, completions within bounds",
+                       ratio <= 2.0 and within, note=f"one query ({ASK_QUERY!r}): MTEFR {mtefr_tokens}, SPR "
+                                                     f"{spr_tokens} evaluated{tag}")
                 return
             tokens, walls, within = {}, {}, True
             for method in ("mtefr", "spr"):
