@@ -98,7 +98,7 @@ def test_prompts_default_names_the_shipped_templates(tmp_path):
 
 def test_each_reply_kind_is_one_model_giving_schema_validation_and_bound():
     names = ["obj", "room"]
-    gate = contract.gate_schema(names)
+    gate = contract.gate_schema(tuple(names))
     # every key required: a grammar-constrained server gets a straight-line grammar
     assert gate["required"] == ["scores", "hints"]
     assert all(gate["properties"][k]["required"] == names for k in ("scores", "hints"))
@@ -114,3 +114,20 @@ def test_each_reply_kind_is_one_model_giving_schema_validation_and_bound():
     assert contract.max_reply_tokens(contract.ranking_schema(1)) < contract.max_reply_tokens(ranking)
     with pytest.raises(ValueError, match="neither 'object' nor 'room'"):
         contract.KeywordReply.model_validate({"thing": "mug"})
+
+
+def test_the_offline_reader_cuts_fences_as_the_regular_expression_would():
+    """`_without_fences` (str.find, fast on the long shared prefix) cuts exactly what
+    `<(tag)>.*?</tag>` would, on random mixes of tags, stray brackets and text."""
+    import random
+    import re
+
+    from iesm_agent.providers.offline.prompt import _without_fences
+
+    pattern = re.compile(r"<(query|hint|candidates|references|experts)>.*?</\1>", re.S)
+    parts = ["<query>", "</query>", "<hint>", "</hint>", "<candidates>", "</candidates>", "<experts>",
+             "</experts>", "<references>", "</references>", "a", "b c", "\n", "<", ">", "</", "<quer", "y>"]
+    rng = random.Random(7)
+    for _ in range(3000):
+        text = "".join(rng.choice(parts) for _ in range(rng.randint(0, 14)))
+        assert _without_fences(text) == pattern.sub(" ", text), text

@@ -63,7 +63,7 @@ async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], c
     if len(specs) > 1 and gate:
         experts = [{"name": s.name, "gate_description": s.gate_description} for s in specs]
         gate_messages = session.render("gate.j2", query=query, experts=experts, candidates=block)
-        gate_schema = contract.gate_schema(names)
+        gate_schema = contract.gate_schema(tuple(names))
 
     if gate_messages is None:
         weights, hints, active = {name: 1.0 / len(names) for name in names}, {}, list(specs)
