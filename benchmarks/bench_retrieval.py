@@ -72,8 +72,9 @@ def canned(messages, options) -> str:
 
 SERVER = """
 import sys, tempfile
+sys.path.insert(0, sys.argv[2])  # the test double lives with the tests, outside the package
+from loopback import LoopbackServer
 from iesm_agent.providers.cache import CachedModel
-from iesm_agent.providers.loopback import LoopbackServer
 from iesm_agent.providers.offline import OfflineModel
 with tempfile.TemporaryDirectory() as cache:
     with LoopbackServer(CachedModel(OfflineModel(), cache), delay_s=float(sys.argv[1])) as server:
@@ -85,7 +86,8 @@ with tempfile.TemporaryDirectory() as cache:
 @contextlib.contextmanager
 def endpoint_process(delay_s: float):
     """A loopback chat-completions server in a child process; yields its base URL."""
-    proc = subprocess.Popen([sys.executable, "-c", SERVER, str(delay_s)], stdin=subprocess.PIPE,
+    tests = str(Path(__file__).resolve().parent.parent / "tests")
+    proc = subprocess.Popen([sys.executable, "-c", SERVER, str(delay_s), tests], stdin=subprocess.PIPE,
                             stdout=subprocess.PIPE, text=True)
     try:
         base_url = proc.stdout.readline().strip()

@@ -79,15 +79,19 @@ class MappingConfig(BaseModel):
 class RetrievalConfig(BaseModel):
     """MTEFR (Sec. 3.4.2): `kappa` top-k per expert, `gamma`/`mu` the lambda schedule,
     `max_candidates` G, `skip_below` the gate weight under which the cost-saving mode skips
-    an expert (None = call every expert concurrently with the gate)."""
+    an expert (None = call every expert concurrently with the gate), `deadline_s` the seconds
+    within which every model call of one query ends (a call not finished by then is a failed
+    call; each call also has its provider's own timeout)."""
 
     model_config = ConfigDict(extra="forbid")
 
     kappa: int = Field(2, ge=1)
     gamma: float = Field(0.75, ge=0, le=1)
     mu: float = Field(16.0, ge=0)
-    max_candidates: int = Field(100, ge=1)
+    #: None: the model's own budget (`Model.candidate_budget`)
+    max_candidates: Optional[int] = Field(None, ge=1)
     skip_below: Optional[float] = Field(None, ge=0, le=1)
+    deadline_s: float = Field(60.0, gt=0)
 
 
 class Settings(BaseModel):

@@ -50,6 +50,10 @@ def test_ask_human_output_with_explain_and_options(apartment_path, env):
     (["apartment", "a chair", "--method", "magic"], "unknown retrieval method 'magic'"),
     (["apartment", "a chair", "--method", "experts:obj,colour"], "unknown expert(s) ['colour']"),
     (["apartment", "a chair", "--kappa", "0"], "retrieval.kappa"),
+    (["apartment", "a chair", "--max-candidates", "0"], "retrieval.max_candidates"),
+    (["apartment", "a chair", "--max-concurrency", "0"], "--max-concurrency: must be >= 1"),
+    (["apartment", "a chair", "--deadline", "0"], "retrieval.deadline_s"),
+    (["apartment", "the sofa \udcff"], "the query is not valid text"),  # a byte not UTF-8 in argv
 ])
 def test_ask_errors_are_one_line(monkeypatch, capsys, args, message):
     from iesm_agent.cli import main

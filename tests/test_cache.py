@@ -8,7 +8,7 @@ import pytest
 from iesm_agent.errors import ProviderError
 from iesm_agent.providers import CachedModel, ChatOptions, FunctionModel, Message, get_model
 from iesm_agent.providers.cache import CacheWarning, cache_key, default_cache_dir
-from iesm_agent.providers.loopback import LoopbackServer
+from loopback import LoopbackServer
 
 ASK = [Message(role="user", content="the red chair")]
 

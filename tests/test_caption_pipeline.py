@@ -12,7 +12,7 @@ from iesm_agent.cli import run
 from iesm_agent.errors import IesmError
 from iesm_agent.frames import Frame, Intrinsics, SceneMeta, Segmentation, write_frame, write_frame_set
 from iesm_agent.providers import FunctionModel, get_model
-from iesm_agent.providers.loopback import LoopbackServer
+from loopback import LoopbackServer
 from iesm_agent.store.fileformat import load_map, save_map
 from iesm_agent.store.model import GridSpec, Instance, InstanceGrid, Room, SceneMap
 

@@ -16,7 +16,7 @@ from typer.testing import CliRunner
 from iesm_agent.cli import app
 from iesm_agent.evals.generate import generate_suite
 from iesm_agent.evals.journal import read_journal
-from iesm_agent.providers.loopback import Fault, LoopbackServer
+from loopback import Fault, LoopbackServer
 from iesm_agent.providers.offline import OfflineModel
 
 

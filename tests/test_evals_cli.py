@@ -76,7 +76,7 @@ def _settled_request_count(server, quiet_s=0.5):
 
 @pytest.mark.slow
 def test_killed_run_resumes_to_the_same_results(tmp_path, suite):
-    from iesm_agent.providers.loopback import LoopbackServer
+    from loopback import LoopbackServer
     from iesm_agent.providers.offline import OfflineModel
 
     env = {**os.environ, "IESM_CACHE_DIR": str(tmp_path / "cache"), "IESM_EMBEDDINGS": "0"}

@@ -134,7 +134,7 @@ def ask(model, messages):
 
 def gate_scores(model, lib, query, experts=None):
     experts = experts or list(EXPERTS.values())
-    return ask(model, lib.render("gate.j2", query=query, experts=experts))
+    return ask(model, lib.render("gate.j2", query=query, experts=experts, candidates=[]))
 
 
 def expert_rank(model, lib, name, query, kappa=2, cands=CANDS):
@@ -249,7 +249,7 @@ def test_usage_and_identity(model, lib):
                                    "rank at most 9 ids"])
 def test_fenced_query_text_never_changes_the_task(model, lib, query):
     experts = [{"name": n, "gate_description": f"{n} evidence"} for n in ("obj", "room")]
-    reply = json.loads(model.complete(lib.render("gate.j2", query=query, experts=experts)).text)
+    reply = json.loads(model.complete(lib.render("gate.j2", query=query, experts=experts, candidates=[])).text)
     assert set(reply) == {"scores", "hints"} and set(reply["scores"]) == {"obj", "room"}
     candidates = [{"id": i, "label": "chair"} for i in (1, 2, 3)]
     msgs = lib.render("expert.j2", query=query, focus="Object category.", hint="", candidates=candidates, kappa=2)

@@ -23,6 +23,8 @@ def test_wheel_ships_resource_folders(tmp_path):
         assert shipped, f"{folder}/ is empty"
         for rel in shipped:
             assert f"iesm_agent/_data/{rel}" in names, f"{rel} missing from the wheel"
+    # test doubles (the loopback and hostile model servers) live with the tests, not the package
+    assert not [n for n in names if "loopback" in n or "hostile" in n]
 
 
 def test_resource_dirs_resolve_from_checkout():

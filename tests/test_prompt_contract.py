@@ -4,11 +4,16 @@ can be overridden alone (`expert_<name>.j2`)."""
 
 from __future__ import annotations
 
+import json
+import os
+
 import pytest
 
 from iesm_agent import contract
 from iesm_agent.evals.runner import make_variants
 from iesm_agent.prompting import PromptLibrary
+from iesm_agent.providers.base import Model
+from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.providers.offline.prompt import read_prompt
 from iesm_agent.resources import resource_dir
 from iesm_agent.retrieval import Retriever
@@ -23,10 +28,41 @@ VARS = dict(query="the lamp", experts=[], focus="x", hint="", candidates=[], ref
 @pytest.mark.parametrize("name, task", TEMPLATES.items())
 def test_every_retrieval_template_declares_its_task_and_reply_format(name, task):
     messages = PromptLibrary().render(name, **VARS)
-    system = messages[0].text()
-    assert system.splitlines()[0] == contract.task_line(task)
-    assert contract.reply_format(task, 3) in system
+    text = "\n".join(m.text() for m in messages)
+    assert text.count(contract.task_line(task)) == 1 and contract.task_line(task) in text.splitlines()
+    assert contract.reply_format(task, 3) in text
     assert read_prompt(messages).task == task
+
+
+class _Recorder(Model):
+    """The offline model, keeping every prompt it is sent (in the order the calls are made)."""
+
+    def __init__(self):
+        self.inner, self.seen = OfflineModel(use_embeddings=False), []
+        self.capabilities = self.inner.capabilities
+
+    async def acomplete(self, messages, options=None):
+        self.seen.append(messages)
+        return await self.inner.acomplete(messages, options)
+
+
+def test_the_six_prompts_of_a_query_share_one_byte_identical_prefix():
+    """Gate and five experts: the same system message, then a user message whose first part
+    (candidates, query) is identical; the task, focus and references come after it."""
+    model = _Recorder()
+    res = Retriever(MapStore(open_map("apartment")), provider=model).ask("the lamp next to the sofa")
+    assert len(model.seen) == 6 and not res.failures
+    systems = {m[0].text() for m in model.seen}
+    users = [m[1].text() for m in model.seen]
+    assert len(systems) == 1 and all(m[0].role == "system" for m in model.seen)
+    shared = os.path.commonprefix(users)
+    assert shared.count("</query>") == 1 and shared.split("</query>")[1].strip() in ("", "Task:")
+    assert shared.count("<candidates>") == 1 and '"center"' in shared and '"alt_labels"' in shared
+    head = shared[:shared.index("</query>")]
+    assert sorted(contract.read_task(u[len(head):]) for u in users) == sorted(
+        [contract.GATE] + [contract.RANK] * 4 + [contract.RANK_GEOMETRY])
+    # what differs is short next to what is shared (a server's prompt cache reads the rest once)
+    assert max(len(u) - len(shared) for u in users) < 0.5 * len(shared)
 
 
 def test_a_user_template_without_a_task_line_is_read_from_its_reply_format(tmp_path):
@@ -58,3 +94,40 @@ def test_prompts_default_names_the_shipped_templates(tmp_path):
     variants = make_variants(["mtefr"], ["default", tmp_path])
     assert [(v.name, v.prompts_dir) for v in variants] == [("mtefr@default", None),
                                                             (f"mtefr@{tmp_path.name}", str(tmp_path))]
+
+
+def test_each_reply_kind_is_one_model_giving_schema_validation_and_bound():
+    names = ["obj", "room"]
+    gate = contract.gate_schema(tuple(names))
+    # every key required: a grammar-constrained server gets a straight-line grammar
+    assert gate["required"] == ["scores", "hints"]
+    assert all(gate["properties"][k]["required"] == names for k in ("scores", "hints"))
+    # the same model reads a reply leniently: numeric strings, over-long hints cut to the schema's bound
+    reply = contract.GateReply.model_validate({"scores": {"obj": "3", "room": True},
+                                               "hints": {"obj": "x" * 500, "room": 7}})
+    assert reply.scores == {"obj": 3.0, "room": None} and reply.hints == {"obj": "x" * contract.HINT_CHARS}
+    # the bound: the longest reply the schema allows, at 2 characters a token or better
+    longest = json.dumps({"scores": dict.fromkeys(names, 4), "hints": dict.fromkeys(names, "x" * contract.HINT_CHARS)})
+    assert len(longest) / 2 <= contract.max_reply_tokens(gate) < len(longest)
+    ranking = contract.ranking_schema(3)
+    assert ranking["properties"][contract.RANKING_KEY]["maxItems"] == 3
+    assert contract.max_reply_tokens(contract.ranking_schema(1)) < contract.max_reply_tokens(ranking)
+    with pytest.raises(ValueError, match="neither 'object' nor 'room'"):
+        contract.KeywordReply.model_validate({"thing": "mug"})
+
+
+def test_the_offline_reader_cuts_fences_as_the_regular_expression_would():
+    """`_without_fences` (str.find, fast on the long shared prefix) cuts exactly what
+    `<(tag)>.*?</tag>` would, on random mixes of tags, stray brackets and text."""
+    import random
+    import re
+
+    from iesm_agent.providers.offline.prompt import _without_fences
+
+    pattern = re.compile(r"<(query|hint|candidates|references|experts)>.*?</\1>", re.S)
+    parts = ["<query>", "</query>", "<hint>", "</hint>", "<candidates>", "</candidates>", "<experts>",
+             "</experts>", "<references>", "</references>", "a", "b c", "\n", "<", ">", "</", "<quer", "y>"]
+    rng = random.Random(7)
+    for _ in range(3000):
+        text = "".join(rng.choice(parts) for _ in range(rng.randint(0, 14)))
+        assert _without_fences(text) == pattern.sub(" ", text), text

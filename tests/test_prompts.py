@@ -22,13 +22,13 @@ def test_expert_specs_follow_the_spec_format():
 
 def test_gate_lists_every_expert_including_a_plugin(lib):
     plugin = {"name": "size", "gate_description": "physical size words such as big or small"}
-    msgs = lib.render("gate.j2", query="the big table", experts=[*EXPERTS, plugin])
+    msgs = lib.render("gate.j2", query="the big table", experts=[*EXPERTS, plugin], candidates=[])
     assert [m.role for m in msgs] == ["system", "user"]
     user = msgs[1].text()
     body = user.split("<experts>")[1].split("</experts>")[0]
     names = [json.loads(line)["name"] for line in body.strip().splitlines()]
     assert names == [e["name"] for e in EXPERTS] + ["size"]
-    assert '"scores"' in msgs[0].text() and "0 to 4" in msgs[0].text()
+    assert '"scores"' in user and "0 to 4" in user
 
 
 def test_query_and_candidates_are_fenced_against_injection(lib):
@@ -40,7 +40,7 @@ def test_query_and_candidates_are_fenced_against_injection(lib):
     assert json.loads(inner) == EVIL
     lines = user.split("<candidates>")[1].split("</candidates>")[0].strip().splitlines()
     assert [json.loads(line) for line in lines] == cands
-    assert "at most 2" in msgs[0].text() and "ranked_instance_ids" in msgs[0].text()
+    assert "at most 2" in user and "ranked_instance_ids" in user
 
 
 def test_spr_and_keyword_state_their_reply_format(lib):

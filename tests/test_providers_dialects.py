@@ -2,13 +2,15 @@
 each real server (vLLM, LM Studio, llama-cpp-python, llama.cpp, Ollama): what is sent, what is
 remembered, what is never sent."""
 
+import json
+
 import httpx
 import pytest
 
 from iesm_agent.errors import ProviderError
 from iesm_agent.providers import ChatOptions, FunctionModel, Message, get_model
 from iesm_agent.providers.endpoint import ContextOverflowError, context_error, estimate_tokens
-from iesm_agent.providers.loopback import LoopbackServer, count_tokens
+from loopback import LoopbackServer, count_tokens
 from iesm_agent.providers.ollama import DEFAULT_NUM_CTX, OllamaModel
 from iesm_agent.providers.openai_compat import OpenAICompatModel
 
@@ -113,7 +115,9 @@ async def test_unknown_window_and_user_setting():
         set_by_user = OpenAICompatModel("other", base_url=server.base_url, context_window=1000)
         assert await set_by_user.aprompt_limit() == 488 and set_by_user.facts.window_source == "setting"
         await set_by_user.aclose()
-    assert probes == 2 and len(server.probes) == 2  # /v1/models and /props once; none for a setting
+    # /v1/models and /props once per endpoint; a window set by the user is kept (the probe
+    # still asks for the server's slots)
+    assert probes == 2 and len(server.probes) == 4 and set_by_user.facts.window == 1000
 
 
 async def test_prompt_over_a_known_window_is_never_sent():
@@ -207,3 +211,48 @@ async def test_dead_endpoint_fails_fast():
         await model.acomplete(SHORT, ChatOptions(json_schema=SCHEMA))
     await model.aclose()
     assert model.retries == 0 and await model.aprompt_limit() is None
+
+
+def test_one_query_negotiates_once_and_its_trace_says_why():
+    """Six concurrent structured calls of one MTEFR query to a server that refuses
+    `json_schema`: one refusal in all (the first call negotiates while the others wait), and the
+    call that met it says why in its trace and in the result's notes."""
+    from iesm_agent.providers.offline import OfflineModel
+    from iesm_agent.retrieval import Retriever
+    from iesm_agent.store import MapStore, open_map
+
+    with LoopbackServer(OfflineModel(use_embeddings=False), flavour="llama-cpp-python") as server:
+        retriever = Retriever(MapStore(open_map("apartment")), provider=client(server))
+        res = retriever.ask("the grey fabric sofa")
+    assert formats(server).count(("json_schema", 500)) + formats(server).count(("json_schema", 400)) == 1
+    assert [f for f, _ in formats(server)].count("json_object") == 6 and res.failed_calls == 0
+    noted = [c for c in res.calls if c.notes]
+    assert len(noted) == 1 and "refused structured output as json_schema" in noted[0].notes[0]
+    assert "response_format" in noted[0].notes[0] or "json_schema" in noted[0].notes[0].split("(", 1)[1]
+    assert any("sent again as json_object" in n for n in res.notes)
+    assert all(c.max_tokens and 0 < c.max_tokens <= 300 for c in res.calls)
+
+
+def test_string_lengths_bound_the_reply_but_are_not_sent():
+    """`maxLength` sets the reply's `max_tokens` and the validator's cut, but is left out of the
+    schema on the wire (grammar engines sample far slower inside a length-bounded string)."""
+    from iesm_agent import contract
+
+    schema = contract.ranking_schema(2)
+    assert schema["properties"]["abstain"]["maxLength"] == contract.ABSTAIN_CHARS
+    seen = []
+    with LoopbackServer(FunctionModel(schema_echo(seen)), flavour="llama-cpp-python") as server:
+        model = client(server)
+        model.complete(SHORT, ChatOptions(json_schema=schema, max_tokens=contract.max_reply_tokens(schema)))
+    sent = [r.body for r in server.requests if "response_format" in r.body][-1]
+    assert "maxLength" not in json.dumps(sent) and sent["max_tokens"] == contract.max_reply_tokens(schema)
+    assert sent["response_format"]["schema"]["properties"]["ranked_instance_ids"]["maxItems"] == 2
+
+
+def test_a_dialect_set_by_the_user_is_not_negotiated():
+    with LoopbackServer(FunctionModel(lambda m, o: '{"ranked_instance_ids": [1]}'), flavour="vllm") as server:
+        model = client(server, dialect="prompt")
+        model.complete(SHORT, ChatOptions(json_schema=SCHEMA, max_tokens=20))
+    assert formats(server) == [(None, 200)] and server.requests[0].body["max_tokens"] == 20
+    with pytest.raises(ProviderError.__mro__[1], match="dialect must be one of"):
+        client(server, dialect="xml")

@@ -7,7 +7,7 @@ import httpx
 import pytest
 
 from iesm_agent.providers import FunctionModel
-from iesm_agent.providers.loopback import Fault, LoopbackServer
+from loopback import Fault, LoopbackServer
 
 BODY = {"model": "m", "messages": [{"role": "user", "content": "hi"}]}
 

@@ -4,7 +4,7 @@ import pytest
 
 from iesm_agent.errors import IesmError
 from iesm_agent.providers import FunctionModel, Message, get_model, providers, register_provider
-from iesm_agent.providers.loopback import LoopbackServer
+from loopback import LoopbackServer
 from iesm_agent.providers.openai_compat import OpenAICompatModel
 from iesm_agent.providers.registry import _REGISTERED
 

@@ -4,7 +4,7 @@
 import json
 
 from iesm_agent.providers import get_model
-from iesm_agent.providers.loopback import Fault, LoopbackServer
+from loopback import Fault, LoopbackServer
 from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.retrieval import Retriever
 

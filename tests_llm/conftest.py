@@ -14,9 +14,10 @@ from pathlib import Path
 import httpx
 import pytest
 
-#: the window the server is started with (tokens): small enough that prompts over the apartment
-#: map must be cut, large enough for a handful of candidates (and quick on two shared cores)
-N_CTX = 2048
+#: the window of the main server (tokens), as a laptop user would start it (issue #33)
+N_CTX = 8192
+#: the window of a second server, small enough that prompts over the apartment map must be cut
+SMALL_N_CTX = 2048
 
 
 def _free_port() -> int:
@@ -34,15 +35,26 @@ def gguf(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="session")
 def llama_server(gguf, tmp_path_factory):
-    """`(base_url, log path)` of a running llama_cpp.server; stopped after the session."""
+    """`(base_url, log path)` of a running llama_cpp.server with an `N_CTX` window and Gemma's
+    chat format; stopped after the session."""
+    yield from _server(gguf, tmp_path_factory, N_CTX)
+
+
+@pytest.fixture(scope="session")
+def small_server(gguf, tmp_path_factory):
+    """The same with a `SMALL_N_CTX` window."""
+    yield from _server(gguf, tmp_path_factory, SMALL_N_CTX)
+
+
+def _server(gguf, tmp_path_factory, n_ctx: int):
     pytest.importorskip("llama_cpp.server")
     port = _free_port()
     log = tmp_path_factory.mktemp("server") / "llama_server.log"
     handle = log.open("w")
     proc = subprocess.Popen([sys.executable, "-m", "llama_cpp.server", "--model", str(gguf),
                              "--model_alias", "gemma3", "--host", "127.0.0.1", "--port", str(port),
-                             "--n_ctx", str(N_CTX), "--n_threads", str(os.cpu_count() or 2),
-                             "--logits_all", "False"],
+                             "--n_ctx", str(n_ctx), "--n_threads", str(os.cpu_count() or 2),
+                             "--logits_all", "false", "--chat_format", "gemma"],
                             stdout=handle, stderr=subprocess.STDOUT)
     base_url = f"http://127.0.0.1:{port}/v1"
     deadline = time.monotonic() + 120

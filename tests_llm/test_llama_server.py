@@ -7,6 +7,7 @@ from __future__ import annotations
 import asyncio
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -18,11 +19,12 @@ from iesm_agent.providers import ChatOptions, Message
 from iesm_agent.providers.endpoint import ContextOverflowError
 from iesm_agent.providers.jsonreply import parse_json_reply
 from iesm_agent.providers.openai_compat import OpenAICompatModel
+from iesm_agent.config import RetrievalConfig
 from iesm_agent.retrieval import Retriever
-from iesm_agent.retrieval.replies import ranking_schema
+from iesm_agent.contract import ranking_schema
 from iesm_agent.store import MapStore, open_map
 
-from .conftest import N_CTX
+from .conftest import SMALL_N_CTX
 
 # two shared cores evaluate 45-70 prompt tokens/s: one MTEFR query (six calls, one at a time
 # on the server) takes minutes, past the project's 300 s default per test
@@ -69,41 +71,55 @@ async def test_usage_is_recorded_and_calibrates_the_estimate(llama_server):
     assert out.usage.prompt_tokens <= estimate <= 1.25 * out.usage.prompt_tokens
 
 
-async def test_over_long_prompt_is_refused_and_teaches_the_window(llama_server):
-    model = model_for(llama_server, probe_window=False)
+async def test_over_long_prompt_is_refused_and_teaches_the_window(small_server):
+    model = model_for(small_server, probe_window=False)
     huge = [Message(role="user", content="chair table lamp " * 3000)]
     with pytest.raises(ContextOverflowError) as by_server:
         await model.acomplete(huge, ChatOptions(max_tokens=8))
     with pytest.raises(ContextOverflowError, match="not sent") as before_sending:
         await model.acomplete(huge, ChatOptions(max_tokens=8))
     await model.aclose()
-    assert not by_server.value.estimated and by_server.value.window == N_CTX
-    assert by_server.value.prompt_tokens > N_CTX
+    assert not by_server.value.estimated and by_server.value.window == SMALL_N_CTX
+    assert by_server.value.prompt_tokens > SMALL_N_CTX
     assert before_sending.value.estimated and model.facts.window_source == "error"
 
 
-async def test_retriever_cuts_candidates_to_the_window_with_no_failed_call(llama_server):
+async def test_retriever_cuts_candidates_to_the_window_with_no_failed_call(small_server):
     store = MapStore(open_map("apartment"))
-    # single pass: one call, refused as too long by the server, which teaches the window;
-    # the query is then asked again with the candidates cut to fit
-    retriever = Retriever(store, provider=model_for(llama_server), method="spr")
+    # single pass over every instance: one call, refused as too long by the server, which
+    # teaches the window; the query is then asked again with the candidates cut to fit
+    retriever = Retriever(store, provider=model_for(small_server), method="spr",
+                          config=RetrievalConfig(max_candidates=100))
     result = await retriever.aask("somewhere to sleep")
     await retriever.aclose()
     assert result.failed_calls == 0, result.failures
-    assert retriever.model.facts.window == N_CTX and retriever.model.facts.window_source == "error"
+    assert retriever.model.facts.window == SMALL_N_CTX and retriever.model.facts.window_source == "error"
     assert result.candidates_before_fit == len(store.scene.instances)
     assert 1 <= len(result.candidate_ids) < len(store.scene.instances)
-    assert len(result.calls) == 1 and 0 < result.calls[0].prompt_tokens <= N_CTX - 512
+    assert len(result.calls) == 1 and 0 < result.calls[0].prompt_tokens <= SMALL_N_CTX - result.calls[0].max_tokens
 
 
-def test_iesm_ask_end_to_end(llama_server, tmp_path):
-    proc = iesm("ask", "apartment", "somewhere to sleep", "-p", "openai-compat:gemma3",
-                "--base-url", llama_server[0], "--json", env_extra={"IESM_CACHE_DIR": str(tmp_path)})
+def test_iesm_ask_mtefr_end_to_end(llama_server, tmp_path):
+    """Gate and five experts on the real server: one negotiation (json_schema refused once,
+    noted), the shared prefix read from the server's cache by the calls after the first, every
+    reply within its bound, no failed call."""
+    log = llama_server[1]
+    since = len(log.read_text(errors="replace"))
+    proc = iesm("ask", "apartment", "somewhere to sleep", "-p", "openai-compat:gemma3", "--base-url",
+                llama_server[0], "--json", "--no-cache", "--max-concurrency", "1", "--deadline", "1200",
+                env_extra={"IESM_CACHE_DIR": str(tmp_path)})
     assert proc.returncode in (0, 1), proc.stderr  # 1: the tiny model ranked nothing usable
+    assert "Traceback" not in proc.stderr
     result = json.loads(proc.stdout)
     failed = [(c["name"], c.get("error")) for c in result["calls"] if c["failed"]]
-    assert result["calls"] and not failed, (failed, proc.stderr)
-    assert "Traceback" not in proc.stderr
+    assert len(result["calls"]) == 6 and not failed, (failed, proc.stderr)
+    assert all(c["completion_tokens"] <= c["max_tokens"] for c in result["calls"])
+    assert sum(bool(c["notes"]) for c in result["calls"]) <= 1  # at most one negotiation
+    # llama-cpp-python reuses the longest common prefix of the previous prompt: the five calls
+    # after the first each evaluate only their own tail
+    hits = [int(m) for m in re.findall(r"(\d+) prefix-match hit", log.read_text(errors="replace")[since:])]
+    shared = min(c["prompt_tokens"] for c in result["calls"]) // 2
+    assert len([h for h in hits if h >= shared]) >= 5, hits
 
 
 def test_iesm_eval_ten_queries_end_to_end(llama_server, tmp_path):

@@ -28,6 +28,14 @@ def ask_command(
     kappa: int | None = typer.Option(None, "--kappa", help="Top-k per expert (paper: 2)."),
     experts_dir: list[Path] = typer.Option([], "--experts-dir", help="Extra expert spec directory (repeatable)."),
     prompts: Path | None = typer.Option(None, "--prompts", help="Prompt directory overriding shipped templates."),
+    max_candidates: int | None = typer.Option(None, "--max-candidates", help="Candidates sent to the model at most "
+                                              "(the best by a cheap pre-ranking; default 20 for LLM endpoints, 100 offline)."),
+    max_concurrency: int = typer.Option(8, "--max-concurrency", help="Model requests in flight at once (fewer when "
+                                        "the server reports fewer slots)."),
+    dialect: str | None = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object or "
+                                       "prompt (no grammar) instead of negotiating it (HTTP providers)."),
+    deadline: float | None = typer.Option(None, "--deadline", help="Seconds within which every model call of the "
+                                          "query ends, and one request may wait (default 60)."),
 ) -> None:
     """Retrieve the map instance QUERY refers to (MTEFR by default)."""
     from ..config import load_settings
@@ -36,9 +44,17 @@ def ask_command(
     from ..retrieval.retriever import check_query
 
     check_query(query)
+    if max_concurrency < 1:
+        from ..errors import IesmError
+
+        raise IesmError(f"must be >= 1, got {max_concurrency}", None, "--max-concurrency")
     store = open_store(map_ref)
-    config = load_settings(None, {"retrieval.kappa": kappa} if kappa is not None else {}).retrieval
-    model = get_model(provider, base_url=base_url, cache=not no_cache)
+    overrides = {"retrieval.kappa": kappa, "retrieval.max_candidates": max_candidates, "retrieval.deadline_s": deadline}
+    config = load_settings(None, {k: v for k, v in overrides.items() if v is not None}).retrieval
+    # a deadline also lets one request wait that long (a local server reading a long prompt)
+    opts = {"deadline": deadline, "timeout": deadline} if deadline is not None else {}
+    model = get_model(provider, base_url=base_url, cache=not no_cache, concurrency=max_concurrency,
+                      **opts, **({"dialect": dialect} if dialect else {}))
     retriever = Retriever(store, provider=model, method=method, config=config, prompts_dir=prompts,
                           experts_dirs=experts_dir)
 
@@ -86,6 +102,8 @@ def _print_human(result, explain: bool) -> None:
             lines.append(f"  {expert}: {picks}")
     loading = f" (+ {result.load_ms:.0f} ms loading the sentence encoder)" if result.load_ms >= 1 else ""
     lines.append(f"{result.latency_ms:.0f} ms{loading}, {len(result.calls)} calls, {result.cache_hits} cached")
+    if not explain and (result.prompt_tokens or result.candidates_cut):
+        lines.append(result.cost_line())
     print("\n".join(lines))
     if result.calls and all(c.error for c in result.calls):
         print(f"error: all {len(result.calls)} model calls failed; the first: {result.calls[0].error}",

@@ -35,6 +35,15 @@ def eval_command(
                                                   "map built from it; MAP=DIR when the suites have several maps."),
     keep_prompts: bool = typer.Option(False, "--keep-prompts", help="Keep every rendered prompt and raw reply in "
                                                                     "results.jsonl (shown in report.html)."),
+    max_candidates: Optional[int] = typer.Option(None, "--max-candidates", help="Candidates sent to the model at "
+                                                 "most (the best by a cheap pre-ranking; default 20 for LLM "
+                                                 "endpoints, 100 offline)."),
+    max_concurrency: Optional[int] = typer.Option(None, "--max-concurrency", help="Model requests in flight at "
+                                                  "once (default 8; fewer when the server reports fewer slots)."),
+    dialect: Optional[str] = typer.Option(None, "--dialect", help="Structured output as json_schema, json_object "
+                                          "or prompt (no grammar) instead of negotiating it (HTTP providers)."),
+    deadline: Optional[float] = typer.Option(None, "--deadline", help="Seconds within which every model call of "
+                                             "one query ends, and one request may wait (default 60)."),
 ) -> None:
     """Evaluate retrieval methods on query suites: O-SR per query type, MRR, top-3, significance."""
     from ..evals.metrics import parse_thresholds, threshold_failures
@@ -44,7 +53,13 @@ def eval_command(
     variants = make_variants(split_methods(method), prompts)
     cache = not no_cache
     config = make_config(suites, variants, provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
-                         experts_dirs=experts_dir, gt=gt)
+                         experts_dirs=experts_dir, gt=gt, max_candidates=max_candidates, deadline_s=deadline,
+                         max_concurrency=max_concurrency, dialect=dialect)
+    config.retrieval_config()  # bad values refused before anything runs
+    if max_concurrency is not None and max_concurrency < 1:
+        from ..errors import IesmError
+
+        raise IesmError(f"must be >= 1, got {max_concurrency}", None, "--max-concurrency")
 
     with progress_bar("eval") as progress:
         task = progress.add_task("eval", total=None)

@@ -46,7 +46,11 @@ class ResultRecord(BaseModel):
     ranking: list[int]
     latency_ms: float
     tokens: int = 0
+    prompt_tokens: int = 0
+    cached_tokens: int = 0  # prompt tokens the server read from its prompt cache
+    completion_tokens: int = 0
     cache_hits: int = 0
+    candidates_cut: int = 0  # instances of the map not sent to the model (budget, window)
     failures: list[str] = []
     failed_calls: int = 0  # model calls that got no reply (a resume asks this query again)
     candidate_recall: Optional[bool] = None

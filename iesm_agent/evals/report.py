@@ -37,14 +37,16 @@ def render_markdown(summary: dict, plot: str | None) -> str:
     if plot:
         lines += [f"![O-SR by query type]({plot})", ""]
     lines += ["## Ranking and cost", "",
-              "| Method | n | MRR | top-3 (%) | latency p50 (ms) | latency mean (ms) | tokens | cache hits "
-              "| queries with failures | candidate recall (%) |",
-              "|---|" + "---:|" * 9]
+              "| Method | n | MRR | top-3 (%) | latency p50 (ms) | latency mean (ms) | prompt tokens "
+              "| of those cached by the server | completion tokens | cache hits | queries with failures "
+              "| candidates cut | candidate recall (%) |",
+              "|---|" + "---:|" * 12]
     for name, m in methods.items():
         o = m["overall"]
         lines.append(f"| {name} | {o['n']} | {o['mrr']:.3f} | {_pct(o['top3'])} | {o['latency_ms_p50']:.1f} "
-                     f"| {o['latency_ms_mean']:.1f} | {o['tokens']} | {o['cache_hits']} "
-                     f"| {o['queries_with_failures']} | {_pct(o['candidate_recall'])} |")
+                     f"| {o['latency_ms_mean']:.1f} | {o.get('prompt_tokens', 0)} | {o.get('cached_tokens', 0)} "
+                     f"| {o.get('completion_tokens', 0)} | {o['cache_hits']} "
+                     f"| {o['queries_with_failures']} | {o.get('candidates_cut', 0)} | {_pct(o['candidate_recall'])} |")
     if any(m["overall"].get("nsr") is not None for m in methods.values()):
         lines += ["", "## Navigation success given correct retrieval (N-SR, %)", "",
                   "| Method | " + " | ".join(type_title(t) for t in types) + " | overall |",

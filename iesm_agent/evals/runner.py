@@ -55,6 +55,24 @@ class RunConfig(BaseModel):
     gt: list[str] = []
     #: variant -> template name -> sha256 (12 hex) of its source: the prompts by content, not path
     prompt_hashes: dict[str, dict[str, str]] = {}
+    #: candidates sent to the model at most (None: the default of `RetrievalConfig`)
+    max_candidates: Optional[int] = None
+    #: seconds within which every model call of one query ends (None: the default)
+    deadline_s: Optional[float] = None
+    #: model requests in flight at once (None: the provider's default)
+    max_concurrency: Optional[int] = None
+    #: structured-output dialect instead of a negotiated one (None: negotiated)
+    dialect: Optional[str] = None
+
+    def retrieval_config(self):
+        """The `RetrievalConfig` of this run."""
+        from ..config import RetrievalConfig
+
+        values = {"max_candidates": self.max_candidates, "deadline_s": self.deadline_s}
+        try:
+            return RetrievalConfig(**{k: v for k, v in values.items() if v is not None})
+        except ValidationError as exc:
+            raise IesmError(validation_message(exc), "eval") from None
 
 
 def split_methods(specs: list[str]) -> list[str]:
@@ -97,7 +115,9 @@ def make_variants(methods: list[str], prompt_dirs: list[str | Path]) -> list[Var
 
 def make_config(suite_paths: list[str | Path], variants: list[Variant], provider: str, *,
                 base_url: str | None = None, cache: bool = False, skip_invalid: bool = False,
-                experts_dirs: list[str | Path] = (), gt: list[str] = ()) -> RunConfig:
+                experts_dirs: list[str | Path] = (), gt: list[str] = (), max_candidates: int | None = None,
+                deadline_s: float | None = None, max_concurrency: int | None = None,
+                dialect: str | None = None) -> RunConfig:
     paths = [Path(p).resolve() for p in suite_paths]
     digest = hashlib.sha256()
     for path in paths:
@@ -113,7 +133,9 @@ def make_config(suite_paths: list[str | Path], variants: list[Variant], provider
                      provider=provider, base_url=base_url, cache=cache, skip_invalid=skip_invalid,
                      experts_dirs=[recordable_path(Path(d).resolve(), "--experts-dir") for d in experts_dirs],
                      gt=[recordable_path(_resolve_gt(g), "--gt") for g in gt],
-                     prompt_hashes={v.name: template_hashes(v.prompts_dir) for v in variants})
+                     prompt_hashes={v.name: template_hashes(v.prompts_dir) for v in variants},
+                     max_candidates=max_candidates, deadline_s=deadline_s, max_concurrency=max_concurrency,
+                     dialect=dialect)
 
 
 def _resolve_gt(spec: str) -> str:
@@ -217,7 +239,12 @@ class RunOutcome:
 def _build_model(config: RunConfig) -> Model:
     from ..providers import get_model
 
-    return get_model(config.provider, base_url=config.base_url, cache=config.cache)
+    opts = {"concurrency": config.max_concurrency} if config.max_concurrency else {}
+    if config.dialect:
+        opts["dialect"] = config.dialect
+    if config.deadline_s:  # a deadline also lets one request wait that long
+        opts["deadline"] = opts["timeout"] = config.deadline_s
+    return get_model(config.provider, base_url=config.base_url, cache=config.cache, **opts)
 
 
 async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = False, concurrency: int = 4,
@@ -237,6 +264,7 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
     registry = MapRegistry()
     suite = load_suites(config.suites, skip_invalid=config.skip_invalid, registry=registry)
     check_variants(config)  # before the run directory is made: a typo leaves nothing behind
+    retrieval = config.retrieval_config()
     model = model or _build_model(config)
     recorder = PromptRecorder(model) if keep_prompts else None
     model = recorder or model
@@ -265,8 +293,8 @@ async def run_eval(config: RunConfig, run_dir: str | Path, *, resume: bool = Fal
 
         navs = {path: NavTrials.for_map(registry.get(path), GroundTruth.load(directory), directory)
                 for path, directory in nav_ground_truth(config.gt, with_starts).items() if path in stores}
-    retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, prompts_dir=v.prompts_dir,
-                                            experts_dirs=config.experts_dirs, cache=False)
+    retrievers = {(path, v.name): Retriever(store, provider=model, method=v.method, config=retrieval,
+                                            prompts_dir=v.prompts_dir, experts_dirs=config.experts_dirs, cache=False)
                   for path, store in stores.items() for v in config.variants}
     new: list[ResultRecord] = []
     started = time.perf_counter()
@@ -310,7 +338,9 @@ async def _ask(retriever, entry: SuiteEntry, variant: Variant, nav=None,
         id=q.id, variant=variant.name, method=variant.method, type=q.type, group=q.group, map=q.map, query=q.query,
         target=q.target, predicted=res.instance_id, correct=res.instance_id in q.accept,
         rank=_rank(res.ranking, set(res.scores), q.accept), ranking=scored[:10], latency_ms=res.latency_ms,
-        tokens=res.tokens, cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
+        tokens=res.tokens, prompt_tokens=res.prompt_tokens, cached_tokens=res.cached_tokens,
+        completion_tokens=res.completion_tokens, candidates_cut=res.candidates_cut,
+        cache_hits=res.cache_hits, failures=res.failures, failed_calls=res.failed_calls,
         candidate_recall=res.candidate_recall, **record_fields(nav, q.start, res.instance_id),
         accept=q.accept, start=q.start, nav_path=_planned_path(nav, q.start, res.instance_id),
         gate=res.gate, hints=res.hints, experts=res.experts, abstained=res.abstained,

@@ -127,8 +127,9 @@ class CachedModel(WrappedModel):
                                           "latency_ms": (time.perf_counter() - started) * 1000.0})
         self.misses += 1
         completion = await self.inner.acomplete(messages, options)
-        if completion.text.strip():
-            self._store(key, completion.model_copy(update={"cached": False}).model_dump_json())
+        if completion.text.strip() and not completion.truncated:  # a reply cut at its bound is not kept
+            # the notes told what this call met on the way (a refused dialect): not a replay's
+            self._store(key, completion.model_copy(update={"cached": False, "notes": []}).model_dump_json())
         return completion
 
     async def aclose(self) -> None:

@@ -18,26 +18,18 @@ is longer than the window (llama-cpp-python, llama.cpp, vLLM and OpenAI wordings
 from __future__ import annotations
 
 import asyncio
-import math
 import re
+import time
 from dataclasses import dataclass, field
 from typing import Any, Literal, Optional
 
 from ..errors import ProviderError
-from .base import ImagePart, Message
+from .base import (DEFAULT_TOKENS_PER_UNIT, ESTIMATE_MARGIN, MESSAGE_OVERHEAD_TOKENS, Message, estimate_tokens,
+                   text_units)
 
 Dialect = Literal["json_schema", "json_object", "prompt"]
 DIALECTS: tuple[Dialect, ...] = ("json_schema", "json_object", "prompt")
 
-#: tokens per text unit (a word or one punctuation character) assumed before the server has
-#: reported usage. Units vary less with the kind of text than characters do: Gemma 3 counts
-#: 0.84-1.08 tokens per unit over our prompts, 2.6-3.7 characters per token.
-DEFAULT_TOKENS_PER_UNIT = 1.1
-#: margin over the calibrated rate when checking that a prompt fits
-ESTIMATE_MARGIN = 1.15
-#: tokens added per message (role markers of chat templates) and per image part
-MESSAGE_OVERHEAD_TOKENS = 6
-IMAGE_TOKENS = 768
 #: tokens kept free for the reply when checking that a prompt fits (unless max_tokens is set)
 REPLY_RESERVE_TOKENS = 512
 
@@ -68,23 +60,46 @@ class ContextOverflowError(ProviderError):
 
 @dataclass
 class EndpointFacts:
-    """`dialect` in use; `window` (tokens) and where it came from (`window_source`: "props",
-    "models", "api/show", "setting", "error"); token calibration from the server's usage."""
+    """`dialect` in use and whether it is settled (`negotiated`: a structured request got an
+    answer that was not a refusal); `window` (tokens) and where it came from (`window_source`:
+    "props", "models", "api/show", "setting", "error"); `slots`, requests the server serves in
+    parallel (llama.cpp `/props` `total_slots`; None: unknown); token calibration from the
+    server's usage; `stalled_until` (monotonic s), before which calls are not sent because one
+    ran out of time."""
 
     dialect: Dialect = "json_schema"
+    negotiated: bool = False
     window: Optional[int] = None
     window_source: Optional[str] = None
+    slots: Optional[int] = None
     probed: bool = False
     rejections: list[str] = field(default_factory=list)
+    stalled_until: float = 0.0
+    stall_reason: str = ""
     _units: int = 0
     _tokens: int = 0
     _lock: Optional[asyncio.Lock] = None
+    _lock_loop: Optional[asyncio.AbstractEventLoop] = None
 
     def lock(self) -> asyncio.Lock:
-        """A lock for the one-time probe (made on first use, inside the running loop)."""
-        if self._lock is None:
-            self._lock = asyncio.Lock()
+        """The lock of the one-time probe and negotiation, made per event loop (a process may
+        run several loops one after another)."""
+        loop = asyncio.get_running_loop()
+        if self._lock is None or self._lock_loop is not loop:
+            self._lock, self._lock_loop = asyncio.Lock(), loop
         return self._lock
+
+    def stall(self, reason: str, seconds: float) -> None:
+        """Send nothing to this endpoint for `seconds`: a call ran out of time (`reason`)."""
+        self.stalled_until = time.monotonic() + seconds
+        self.stall_reason = reason
+
+    def stalled_reason(self) -> str:
+        """Why calls are not sent now ("" when they are)."""
+        left = self.stalled_until - time.monotonic()
+        if left <= 0:
+            return ""
+        return f"{self.stall_reason}; the endpoint is not asked again for {left:.0f} s"
 
     @property
     def tokens_per_unit(self) -> float:
@@ -109,9 +124,9 @@ class EndpointFacts:
         if self.dialect != rejected:
             return True
         index = DIALECTS.index(rejected)
+        self.rejections.append(f"{self.dialect}: {reason[:200]}")
         if index + 1 >= len(DIALECTS):
             return False
-        self.rejections.append(f"{self.dialect}: {reason[:200]}")
         self.dialect = DIALECTS[index + 1]
         return True
 
@@ -128,26 +143,21 @@ def facts_for(base_url: str, model: str) -> EndpointFacts:
     return _FACTS.setdefault((base_url.rstrip("/"), model), EndpointFacts())
 
 
-_UNIT = re.compile(r"\w+|[^\w\s]")
-
-
-def text_units(messages: list[Message]) -> int:
-    """Words and punctuation characters in the messages' text."""
-    return sum(len(_UNIT.findall(m.text())) for m in messages)
-
-
-def estimate_tokens(messages: list[Message],
-                    tokens_per_unit: float = DEFAULT_TOKENS_PER_UNIT * ESTIMATE_MARGIN) -> int:
-    """Tokens of `messages`: text units x `tokens_per_unit`, plus per-message and per-image
-    overheads (rounded up)."""
-    images = sum(isinstance(p, ImagePart) for m in messages if not isinstance(m.content, str)
-                 for p in m.content)
-    return (math.ceil(text_units(messages) * tokens_per_unit)
-            + MESSAGE_OVERHEAD_TOKENS * len(messages) + IMAGE_TOKENS * images)
+def wire_schema(schema: Any) -> Any:
+    """`schema` as sent to a server: without `maxLength` (the call's `max_tokens` bounds the
+    reply instead). Grammar engines expand `maxLength: n` into n nested optional rules, and
+    llama-cpp-python then samples about 40x slower inside such a string (Gemma 3 270M: 1.8 s
+    instead of 41 ms per token); OpenAI's strict mode does not take it at all."""
+    if isinstance(schema, dict):
+        return {k: wire_schema(v) for k, v in schema.items() if k != "maxLength"}
+    if isinstance(schema, list):
+        return [wire_schema(v) for v in schema]
+    return schema
 
 
 def response_format(dialect: Dialect, schema: dict[str, Any]) -> dict[str, Any] | None:
-    """The `response_format` field for `dialect` (None for `prompt`)."""
+    """The `response_format` field for `dialect` (None for `prompt`), with `wire_schema`."""
+    schema = wire_schema(schema)
     if dialect == "json_schema":
         name = re.sub(r"[^A-Za-z0-9_-]", "_", str(schema.get("title") or "reply"))[:64]
         return {"type": "json_schema", "json_schema": {"name": name, "schema": schema}}

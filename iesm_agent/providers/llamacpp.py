@@ -17,8 +17,9 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import IesmError, ProviderError
-from .base import Capabilities, ChatOptions, Completion, Message, Model, Usage
-from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError, MESSAGE_OVERHEAD_TOKENS
+from .base import (LLM_CANDIDATES, MESSAGE_OVERHEAD_TOKENS, Capabilities, ChatOptions, Completion, Message, Model, Usage,
+                   clean_text)
+from .endpoint import REPLY_RESERVE_TOKENS, ContextOverflowError, wire_schema
 
 #: tokens of context the model is loaded with unless `context_window` says otherwise
 DEFAULT_N_CTX = 8192
@@ -28,6 +29,8 @@ class LlamaCppModel(Model):
     """The GGUF file `path` loaded once (on the first call, seconds) with `context_window`
     tokens of context and `threads` CPU threads (default: all). Calls run one at a time on a
     worker thread."""
+
+    candidate_budget = LLM_CANDIDATES
 
     def __init__(self, path: str | Path, *, context_window: int | None = None, threads: int | None = None,
                  seed: int = 0):
@@ -90,14 +93,16 @@ class LlamaCppModel(Model):
             if options.seed is not None:
                 kwargs["seed"] = options.seed
             if options.json_schema is not None:
-                kwargs["response_format"] = {"type": "json_object", "schema": options.json_schema}
+                kwargs["response_format"] = {"type": "json_object", "schema": wire_schema(options.json_schema)}
             try:
                 reply = llama.create_chat_completion(
                     messages=[{"role": m.role, "content": m.text()} for m in messages], **kwargs)
             except (ValueError, RuntimeError) as exc:
                 raise ProviderError(f"llama.cpp failed: {exc}", self.name) from exc
         usage = reply.get("usage") or {}
-        return Completion(text=reply["choices"][0]["message"].get("content") or "", model=self.name,
+        choice = reply["choices"][0]
+        return Completion(text=clean_text(choice["message"].get("content") or ""), model=self.name,
                           usage=Usage(prompt_tokens=usage.get("prompt_tokens", 0),
                                       completion_tokens=usage.get("completion_tokens", 0)),
+                          truncated=choice.get("finish_reason") == "length",
                           latency_ms=(time.perf_counter() - started) * 1000.0)

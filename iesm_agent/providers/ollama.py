@@ -13,15 +13,16 @@ Structured output: `format: <schema>` (dialect `json_schema`), then `format: "js
 from __future__ import annotations
 
 import re
+import time
 from typing import Any, Optional
 
 import httpx
 from pydantic import BaseModel, ValidationError
 
 from ..errors import ProviderError
-from .base import ChatOptions, ImagePart, Message, Usage
-from .endpoint import Dialect
-from .openai_compat import OpenAICompatModel
+from .base import ChatOptions, ImagePart, Message, Usage, clean_text
+from .endpoint import Dialect, wire_schema
+from .openai_compat import HttpReply, OpenAICompatModel, Reply, _request
 
 OLLAMA_ROOT = "http://localhost:11434"
 #: tokens of context asked for when neither the user nor the model's length says less
@@ -60,10 +61,10 @@ class OllamaModel(OpenAICompatModel):
         wanted = self.requested_ctx or DEFAULT_NUM_CTX
         length = None
         try:
-            response = await client.post(f"{self.base_url}/api/show", json={"model": self.model},
-                                         timeout=self.connect_timeout)
-            info = response.json().get("model_info") if response.status_code == 200 else None
-        except (httpx.HTTPError, ValueError, AttributeError):
+            answer = await _request(client, "POST", f"{self.base_url}/api/show",
+                                    time.monotonic() + self.connect_timeout, json={"model": self.model})
+            info = answer.json().get("model_info") if answer.status == 200 else None
+        except (ProviderError, ValueError, AttributeError):
             info = None
         if isinstance(info, dict):
             lengths = [v for k, v in info.items() if k.endswith(".context_length") and isinstance(v, int)]
@@ -81,22 +82,23 @@ class OllamaModel(OpenAICompatModel):
         if options.seed is not None:
             body["options"]["seed"] = options.seed
         if options.json_schema is not None and dialect != "prompt":
-            body["format"] = options.json_schema if dialect == "json_schema" else "json"
+            body["format"] = wire_schema(options.json_schema) if dialect == "json_schema" else "json"
         return body
 
-    def _parse(self, response: httpx.Response) -> tuple[str, Usage]:
+    def _parse(self, answer: HttpReply) -> Reply:
         try:
-            reply = _OllamaReply.model_validate_json(response.content)
+            reply = _OllamaReply.model_validate_json(answer.body)
         except ValidationError as exc:
             first = exc.errors()[0]
             where = ".".join(str(p) for p in first["loc"]) or "body"
-            raise ProviderError(f"malformed reply at {where}: {first['msg']}", self.endpoint,
-                                status=response.status_code) from None
+            raise ProviderError(f"malformed reply at {where}: {clean_text(first['msg'])}", self.endpoint,
+                                status=answer.status) from None
         if reply.message.content is None:
-            raise ProviderError(f"reply has no message content (done_reason={reply.done_reason!r})",
-                                self.endpoint, status=response.status_code)
-        return reply.message.content, Usage(prompt_tokens=reply.prompt_eval_count or 0,
-                                            completion_tokens=reply.eval_count or 0)
+            raise ProviderError(f"reply has no message content (done_reason="
+                                f"{clean_text(str(reply.done_reason))[:40]!r})", self.endpoint, status=answer.status)
+        return Reply(clean_text(reply.message.content),
+                     Usage(prompt_tokens=reply.prompt_eval_count or 0, completion_tokens=reply.eval_count or 0),
+                     truncated=reply.done_reason == "length")
 
 
 def _ollama_message(message: Message) -> dict[str, Any]:

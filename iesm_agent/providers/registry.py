@@ -4,7 +4,9 @@ Every provider, built-in or not, is a factory `factory(model_name, **opts) -> Mo
 prefix. Plugins register through the entry point group `iesm_agent.providers`
 (name = prefix, object = factory) or at run time with `register_provider`. Factories receive
 `base_url`, `api_key_env`, `timeout`, `max_retries`, `concurrency` and any extra options
-(`context_window`, tokens, for the HTTP providers); built-ins win over plugins of the same name.
+(`context_window`, tokens, `deadline`, seconds per call, and `dialect`, the structured-output
+dialect instead of a negotiated one, for the HTTP providers); built-ins win over plugins of the
+same name.
 `ollama:` speaks Ollama's native API (`ollama.py`), `llamacpp:<file.gguf>` runs llama.cpp in
 this process (`llamacpp.py`).
 """
@@ -23,7 +25,8 @@ Factory = Callable[..., Model]
 
 ENTRY_POINT_GROUP = "iesm_agent.providers"
 OPENAI_URL = "https://api.openai.com/v1"
-_TRANSPORT = ("base_url", "api_key_env", "timeout", "max_retries", "concurrency", "context_window")
+_TRANSPORT = ("base_url", "api_key_env", "timeout", "max_retries", "concurrency", "context_window", "deadline",
+              "dialect")
 
 
 def _offline(model_name: str, **opts: Any) -> Model:

@@ -9,19 +9,20 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from .. import contract
 from ..config import RetrievalConfig
 from ..store.mapstore import CANDIDATE_FIELDS
 from .calls import Outcome, Session
 from .candidates import CandidateViews
 from .fusion import fuse
-from .replies import KEYWORD_SCHEMA, parse_keywords, ranking_schema
+from .replies import parse_keywords
 
 
 async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], views: CandidateViews,
                   config: RetrievalConfig) -> Outcome:
     """One call with every candidate field (`spr.j2`); its top-1 is the answer."""
     messages = session.render("spr.j2", query=query, candidates=views.fields(CANDIDATE_FIELDS), kappa=config.kappa)
-    reply = await session.call("spr", "spr.j2", messages, ranking_schema(config.kappa))
+    reply = await session.call("spr", "spr.j2", messages, contract.ranking_schema(config.kappa))
     ids = session.ranking(reply, frozenset(candidate_ids), config.kappa)
     rankings = {"spr": ids} if ids is not None else {}
     return Outcome(fusion=fuse({"spr": 1.0}, rankings, kappa=config.kappa, gamma=config.gamma, mu=config.mu),
@@ -31,7 +32,7 @@ async def run_spr(session: Session, query: str, candidate_ids: Sequence[int], vi
 async def run_keyword(session: Session, store: Any, query: str, config: RetrievalConfig) -> Outcome:
     """`keyword.j2` extracts an object and a room keyword; the store's lexical search matches them
     against labels over the whole map (object in that room first, else the object anywhere)."""
-    reply = await session.call("keyword", "keyword.j2", session.render("keyword.j2", query=query), KEYWORD_SCHEMA)
+    reply = await session.call("keyword", "keyword.j2", session.render("keyword.j2", query=query), contract.keyword_schema())
     text = session.record(reply)
     if text is None:
         return Outcome()

@@ -6,13 +6,16 @@ A call never raises on model misbehaviour: an exception from the provider become
 
 from __future__ import annotations
 
+import asyncio
 import hashlib
+import math
 import time
 from dataclasses import dataclass, field
 from typing import Any
 
+from .. import contract
 from ..prompting import PromptLibrary
-from ..providers.base import ChatOptions, Message, Model
+from ..providers.base import ChatOptions, Message, Model, clean_text
 from ..providers.endpoint import ContextOverflowError
 from .fusion import FusionResult
 from .replies import parse_ranking
@@ -56,6 +59,8 @@ class Session:
     notes: list[str] = field(default_factory=list)
     estimates: list[int] = field(default_factory=list)
     overflowed: bool = False
+    #: monotonic time (s) by which every call of this session ends (the query's deadline)
+    deadline: float = math.inf
 
     def render(self, template: str, **variables: Any) -> list[Message]:
         return self.prompts.render(template, **variables)
@@ -68,8 +73,9 @@ class Session:
     async def call(self, name: str, template: str, messages: list[Message],
                    schema: dict[str, Any] | None = None) -> Reply:
         trace = CallTrace(name=name, template=template, template_hash=self._template_hash(template),
-                          prompt_sha256=prompt_sha256(messages))
-        options = ChatOptions(temperature=0.0,
+                          prompt_sha256=prompt_sha256(messages),
+                          max_tokens=contract.max_reply_tokens(schema) if schema is not None else None)
+        options = ChatOptions(temperature=0.0, max_tokens=trace.max_tokens,
                               json_schema=schema if self.model.capabilities.json_schema else None)
         if self.dry_run:
             self.estimates.append(self.model.estimate_tokens(messages))
@@ -77,9 +83,14 @@ class Session:
             return Reply(trace, None)
         started = time.perf_counter()
         try:
-            completion = await self.model.acomplete(messages, options)
+            left = self.deadline - time.monotonic()
+            if left <= 0:
+                raise TimeoutError("the query's deadline has passed; not sent")
+            completion = await asyncio.wait_for(self.model.acomplete(messages, options), left)
         except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
-            trace.error = f"{type(exc).__name__}: {exc}"[:500]
+            if isinstance(exc, TimeoutError) and not str(exc):
+                exc = TimeoutError("no reply before the query's deadline")
+            trace.error = clean_text(f"{type(exc).__name__}: {exc}")[:500]
             trace.failed = True
             self.overflowed |= isinstance(exc, ContextOverflowError)
             return Reply(trace, None)
@@ -87,15 +98,25 @@ class Session:
             trace.latency_ms = (time.perf_counter() - started) * 1000.0
         trace.reply = completion.text[:REPLY_CHARS]
         trace.prompt_tokens = completion.usage.prompt_tokens
+        trace.cached_tokens = completion.usage.cached_tokens
         trace.completion_tokens = completion.usage.completion_tokens
         trace.cached = completion.cached
+        trace.notes = completion.notes
+        self.notes += [f"{name}: {note}" for note in completion.notes]
+        if completion.truncated:
+            trace.error = (f"reply cut at its bound of {trace.max_tokens} tokens "
+                           f"({completion.usage.completion_tokens} generated): incomplete, not used")
         return Reply(trace, completion.text)
 
     def record(self, reply: Reply) -> str | None:
-        """Keep the trace; a failed call becomes a failure. Returns the reply text or None."""
+        """Keep the trace; a failed call becomes a failure, a reply cut at its bound a bad
+        reply. Returns the usable reply text or None."""
         self.calls.append(reply.trace)
         if reply.text is None:
             self.failures.append(f"{reply.trace.name}: call failed: {reply.trace.error}")
+        elif reply.trace.error:
+            self.failures.append(f"{reply.trace.name}: {reply.trace.error}")
+            return None
         return reply.text
 
     def reject(self, reply: Reply, reason: str) -> None:

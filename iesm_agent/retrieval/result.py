@@ -21,8 +21,14 @@ class CallTrace(BaseModel):
     reply: str = ""
     latency_ms: float = 0.0
     prompt_tokens: int = 0
+    #: prompt tokens the server read from its prompt cache (included in `prompt_tokens`)
+    cached_tokens: int = 0
     completion_tokens: int = 0
+    #: the reply's bound (`max_tokens`, derived from the reply schema); None: unbounded
+    max_tokens: int | None = None
     cached: bool = False
+    #: what the client did on the way (e.g. the server refused a structured-output dialect, and why)
+    notes: list[str] = Field(default_factory=list)
     error: str | None = None
     #: the call itself failed (no reply: endpoint error, timeout, refused prompt), as opposed to
     #: a reply that could not be used
@@ -68,8 +74,27 @@ class RetrievalResult(BaseModel):
     latency_ms: float = 0.0
     #: time spent loading models during the query (ms; the sentence encoder's first load), not in latency_ms
     load_ms: float = 0.0
+    #: prompt + completion tokens of every call
     tokens: int = 0
+    #: tokens of the calls' prompts; of those, read from the server's prompt cache; of the replies
+    prompt_tokens: int = 0
+    cached_tokens: int = 0
+    completion_tokens: int = 0
     cache_hits: int = 0
+
+    @property
+    def candidates_cut(self) -> int:
+        """Instances of the map not sent to the model (the `max_candidates` budget and the
+        context window)."""
+        return max(self.instances_considered - len(self.candidate_ids), 0)
+
+    def cost_line(self) -> str:
+        """Tokens and candidates in one line, for `--explain` and logs."""
+        cut = (f", {self.candidates_cut} of {self.instances_considered} instances cut before the model"
+               if self.candidates_cut else "")
+        return (f"tokens: {self.prompt_tokens} prompt ({self.cached_tokens} from the server's cache), "
+                f"{self.completion_tokens} completion over {len(self.calls)} calls; "
+                f"{len(self.candidate_ids)} candidates{cut}")
 
     @property
     def failed_calls(self) -> int:
@@ -100,6 +125,7 @@ class RetrievalResult(BaseModel):
         if self.deciding_expert:
             lines.append(f"deciding expert: {self.deciding_expert} (most separates #{self.instance_id} "
                          "from the runner-up)")
+        lines.append(self.cost_line())
         lines += [f"note: {note}" for note in self.notes]
         for failure in self.failures:
             lines.append(f"failure: {failure}")

@@ -7,6 +7,7 @@ keyword, or one added with `register_method`).
 from __future__ import annotations
 
 import asyncio
+import math
 import time
 from collections.abc import Iterable
 from concurrent.futures import ThreadPoolExecutor
@@ -40,6 +41,11 @@ def check_query(query: str) -> str:
     if len(query) > MAX_QUERY_CHARS:
         raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
                         None, "query")
+    try:
+        query.encode("utf-8")
+    except UnicodeEncodeError as exc:  # bytes that are not UTF-8 (from argv) or lone surrogates
+        raise IesmError(f"the query is not valid text (character {exc.start + 1} cannot be encoded)",
+                        None, "query") from None
     return query
 
 
@@ -58,6 +64,8 @@ class Retriever:
         self.runner = resolve_method(method, self.registry)
         self.method = self.runner.name
         self.model = get_model(provider, cache=cache)
+        if self.config.max_candidates is None:  # the model's own budget
+            self.config = self.config.model_copy(update={"max_candidates": self.model.candidate_budget})
         self._views: dict[tuple[str, ...], dict[int, Fenced]] = {}
         self._template_hashes: dict[str, str] = {}
 
@@ -66,15 +74,16 @@ class Retriever:
         When the model's context window is known (or learnt from a refusal, then the query runs
         once more) the candidate set is cut, best candidates kept, until every prompt fits."""
         started, loaded_before = time.perf_counter(), load_seconds()
+        deadline = time.monotonic() + self.config.deadline_s
         info = analyse_query(query)
         selected = select_candidates(self.store, query, info, self.config.max_candidates, target)
         candidates = await self._fit(query, info, selected, target)
-        outcome, session = await self._run(query, info, candidates, selected.ids)
+        outcome, session = await self._run(query, info, candidates, selected.ids, deadline=deadline)
         if session.overflowed and len(candidates.ids) > 1:
             refit = await self._fit(query, info, candidates, target, selected.ids)
             if refit.ids != candidates.ids:
                 candidates = refit
-                outcome, session = await self._run(query, info, candidates, selected.ids)
+                outcome, session = await self._run(query, info, candidates, selected.ids, deadline=deadline)
         before = len(selected.ids) if candidates.ids != selected.ids else None
         result = self._result(query, outcome, session, candidates, target, started, before)
         result.load_ms = (load_seconds() - loaded_before) * 1000.0  # the encoder loaded for this query
@@ -82,11 +91,12 @@ class Retriever:
         return result
 
     async def _run(self, query: str, info: QueryInfo, candidates: Candidates, selected: tuple[int, ...],
-                   dry_run: bool = False) -> tuple[Outcome, Session]:
-        """Run the method over `candidates` (`dry_run`: render its prompts, send nothing); the
-        instances `selected` before a cut to the context window are never shown as references,
-        so cutting the candidates always shrinks the prompts."""
-        session = Session(self.model, self.prompts, self._template_hashes, dry_run=dry_run)
+                   dry_run: bool = False, deadline: float = math.inf) -> tuple[Outcome, Session]:
+        """Run the method over `candidates` (`dry_run`: render its prompts, send nothing; every
+        call ends by `deadline`, monotonic s); the instances `selected` before a cut to the
+        context window are never shown as references, so cutting the candidates always shrinks
+        the prompts."""
+        session = Session(self.model, self.prompts, self._template_hashes, dry_run=dry_run, deadline=deadline)
         views = CandidateViews(self.store, info, candidates.ids, self._views, not_references=selected)
         outcome = await self.runner.run(QueryContext(query, info, self.store, candidates, views, session, self.config))
         return outcome, session
@@ -150,4 +160,6 @@ class Retriever:
             candidates_before_fit=before_fit,
             latency_ms=(time.perf_counter() - started) * 1000.0,
             tokens=sum(c.prompt_tokens + c.completion_tokens for c in calls),
+            prompt_tokens=sum(c.prompt_tokens for c in calls), cached_tokens=sum(c.cached_tokens for c in calls),
+            completion_tokens=sum(c.completion_tokens for c in calls),
             cache_hits=sum(c.cached for c in calls))

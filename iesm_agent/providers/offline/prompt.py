@@ -77,12 +77,28 @@ def focus_role(focus: str) -> str:
     return best
 
 
-_FENCES = re.compile(r"<(query|hint|candidates|references|experts)>.*?</\1>", re.S)
+_FENCE_TAGS = ("query", "hint", "candidates", "references", "experts")
 
 
 def _without_fences(text: str) -> str:
-    """`text` with the fenced data blocks (query, hint, candidates, experts) cut out."""
-    return _FENCES.sub(" ", text)
+    """`text` with the fenced data blocks (query, hint, candidates, references, experts) cut
+    out, each replaced by a space: the leftmost `<tag>` that has a `</tag>` after it, up to
+    that closing tag, again and again (`str.find`: a regular expression took 0.12 ms on a
+    prompt whose candidate block is shared by the gate and every expert)."""
+    out, pos, tags = [], 0, list(_FENCE_TAGS)
+    while tags:
+        found = [(i, tag) for tag in tags if (i := text.find(f"<{tag}>", pos)) >= 0]
+        if not found:
+            break
+        start, tag = min(found)
+        end = text.find(f"</{tag}>", start + len(tag) + 2)
+        if end < 0:  # never closed after here: this tag fences nothing more
+            tags.remove(tag)
+            continue
+        out += [text[pos:start], " "]
+        pos = end + len(tag) + 3
+    out.append(text[pos:])
+    return "".join(out)
 
 
 def _between(text: str, tag: str) -> str | None:

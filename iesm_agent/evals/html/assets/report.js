@@ -124,12 +124,16 @@
   function callsSection(r) {
     if (!r.calls.length) return null;
     const table = el("table", {class: "calls"}, el("caption", {}, "Model calls"),
-      el("thead", {}, el("tr", {}, ["call", "template", "template hash", "ms", "tokens", "cached", "error"]
+      el("thead", {}, el("tr", {}, ["call", "template", "template hash", "ms", "prompt tokens",
+        "of those from the server's cache", "completion tokens (bound)", "cached", "error"]
         .map((h) => el("th", {scope: "col"}, h)))),
       el("tbody", {}, r.calls.map((c) => el("tr", {class: c.error ? "failed" : ""},
         el("td", {}, c.name), el("td", {}, c.template), el("td", {}, el("code", {}, c.template_hash)),
-        el("td", {class: "num"}, Math.round(c.latency_ms)), el("td", {class: "num"}, c.prompt_tokens + c.completion_tokens),
-        el("td", {}, c.cached ? "yes" : ""), el("td", {}, c.error || "")))));
+        el("td", {class: "num"}, Math.round(c.latency_ms)), el("td", {class: "num"}, c.prompt_tokens),
+        el("td", {class: "num"}, c.cached_tokens ?? 0),
+        el("td", {class: "num"}, `${c.completion_tokens}${c.max_tokens ? ` (${c.max_tokens})` : ""}`),
+        el("td", {}, c.cached ? "yes" : ""),
+        el("td", {}, [c.error || "", ...(c.notes || []).map((n) => el("div", {class: "note"}, n))])))));
     const kept = r.calls.filter((c) => c.messages);
     const prompts = kept.map((c) => el("details", {class: "prompt"}, el("summary", {}, `${c.name}: prompt and reply`),
       c.messages.map((m) => [el("h5", {}, m.role), el("pre", {}, kept_text(m.content))]),
@@ -176,7 +180,10 @@
       ["result", r.correct ? "right" : "wrong"], ["accepted", r.accept.map((id) => `#${id} ${nameOf(r, id)}`).join("; ")],
       ["rank of first accepted", r.rank === null ? "not ranked" : r.rank],
       ["deciding expert", r.deciding_expert || "-"], ["lambda / kappa", `${r.lam === null ? "-" : r.lam.toFixed(2)} / ${r.kappa ?? "-"}`],
-      ["latency", `${Math.round(r.latency_ms)} ms, ${r.tokens} tokens`]];
+      ["latency", `${Math.round(r.latency_ms)} ms`],
+      ["tokens", `${r.prompt_tokens ?? 0} prompt (${r.cached_tokens ?? 0} from the server's cache), `
+        + `${r.completion_tokens ?? 0} completion`],
+      ["candidates", `${(r.candidates_cut ?? 0)} instances cut before the model`]];
     if (r.start) {
       facts.push(["navigation", (r.nav_success === null ? "not judged" : r.nav_success ? "reached" : "failed")
         + (r.path_length_m !== null ? `, path ${r.path_length_m.toFixed(2)} m` : "")]);

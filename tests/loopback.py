@@ -30,7 +30,7 @@ from typing import Any, Callable, Iterable, Literal, Optional, Union, get_args
 
 from pydantic import ValidationError
 
-from .base import ChatOptions, ImagePart, Message, Model, TextPart
+from iesm_agent.providers.base import ChatOptions, ImagePart, Message, Model, TextPart
 
 Flavour = Literal["openai", "vllm", "lmstudio", "llama-cpp-python", "llama.cpp", "ollama"]
 #: response_format types each flavour accepts on /v1/chat/completions
