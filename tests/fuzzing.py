@@ -145,7 +145,7 @@ def write_tiny_frames(d: Path, n: int = 2) -> Path:
 
     emb, _ = text_vectors(["chair", "table"], HASH_SPACE)
     write_frame_set(d, SceneMeta(scene_id="fz", n_frames=n, embedding_space=HASH_SPACE, categories=["chair", "table"]),
-                    Intrinsics(width=W, height=H, fx=8.0, fy=8.0, cx=7.5, cy=5.5))
+                    Intrinsics(width=W, height=H, fx=80.0, fy=80.0, cx=7.5, cy=5.5))  # 2.5 cm a pixel at 2 m: 4 per cell
     for i in range(n):
         masks = np.zeros((2, H, W), bool)
         masks[0, 2:8, 3:9] = True
