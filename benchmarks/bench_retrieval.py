@@ -4,10 +4,11 @@
     server answering with the offline model's replies, cached beforehand so that the server adds
     no compute of its own): target <= 1.2 x 200 ms per query (calls in parallel).
 (b) Retrieval overhead outside model calls on a 300-instance synthetic map (G = 100 candidates):
-    query latency (`aask` in a running loop) minus the time spent inside provider calls. Measured
-    twice: with the offline model (its call time is subtracted; the offline model is synchronous,
-    so calls do not overlap) and with a zero-cost FunctionModel returning canned valid JSON
-    (nothing to subtract). Target p50 <= 2 ms. The sync `ask()` wall (adds `asyncio.run`) is shown.
+    query latency (`aask` in a running loop) with a zero-cost FunctionModel returning canned valid
+    JSON (no call time to subtract). Target p50 <= 2 ms. The offline model's wall per query is
+    shown beside it: its calls now wait for each other (one negotiation per endpoint, slots), so
+    subtracting their summed latencies no longer measures an overhead. The sync `ask()` wall
+    (adds `asyncio.run`) is shown.
 (c) A fully cached query (CachedModel, the same query asked again): target p50 <= 5 ms.
 
 Run: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/bench_retrieval.py [--queries N]
@@ -113,8 +114,8 @@ def run_queries(retriever: Retriever, queries: list[str], repeat: int = 1) -> li
 
 
 def outside_calls_ms(res) -> float:
-    """Query latency minus the time spent inside provider calls (calls run one after the other
-    with the synchronous offline model, and take no time with the canned model)."""
+    """Query latency minus the time spent inside provider calls (which take no time with the
+    canned model)."""
     return res.latency_ms - sum(c.latency_ms for c in res.calls)
 
 
@@ -139,9 +140,9 @@ def main() -> None:
                                                             for r in results]), 1.1, "x"))
 
     # (b) overhead outside model calls, 300 instances, G = 100 candidates
-    rows.append(("(b) overhead, offline model",
-                 p50([outside_calls_ms(r) for r in run_queries(Retriever(store, provider=offline), queries, 3)]),
-                 2.0, "ms"))
+    rows.append(("(b) offline model, wall per query",
+                 p50([r.latency_ms for r in run_queries(Retriever(store, provider=offline), queries, 3)]),
+                 float("nan"), "ms"))
     canned_retriever = Retriever(store, provider=FunctionModel(canned))
     rows.append(("(b) overhead, zero-cost canned model",
                  p50([outside_calls_ms(r) for r in run_queries(canned_retriever, queries, 5)]), 2.0, "ms"))
@@ -166,7 +167,7 @@ def main() -> None:
         print(f"{name:44s} {value:8.2f}{unit:2s} {target:7.1f}{unit:2s}  {ok}")
     by_name = {name: value for name, value, _, _ in rows}
     for key, name, unit, target in (("mtefr_wall_over_latency", "(a) wall / slowest single call", "x", 1.1),
-                                    ("retrieval_overhead_p50_ms", "(b) overhead, offline model", "ms", 2.0),
+                                    ("retrieval_overhead_p50_ms", "(b) overhead, zero-cost canned model", "ms", 2.0),
                                     ("cached_query_ms", "(c) fully cached query", "ms", 2.0)):
         if name in by_name:
             record(key, by_name[name], unit, f"<= {target:g} {unit}", by_name[name] <= target, note="p50")
