@@ -194,9 +194,9 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and not _names_after_copula(root):
         return "continuation", None
-    command = _command_verb(doc, sent)
+    command = _command(doc, sent)
     if command is not None:
-        return "request", _object_of(doc, command)
+        return "request", command[1]
     if root.pos_ not in ("VERB", "AUX") and subject is None:
         return "request", root.i  # a bare noun phrase: "the lamp on the left", "something to sit on"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
@@ -222,10 +222,10 @@ def _names_after_copula(root) -> bool:
     return root.lemma_ == "be" and any(c.dep_ == "attr" and c.pos_ in _NOUNS for c in root.children)
 
 
-def _command_verb(doc, sent):
-    """The imperative verb of the sentence: a base-form verb heading a clause with no subject of
-    its own, or with "you" ("could you take me to ..."); of several, the last one with an object
-    ("go to the bedroom and find the lamp"); None when there is none."""
+def _command(doc, sent) -> tuple[object, int | None] | None:
+    """(imperative verb, its target word or None) of the sentence: a base-form verb heading a
+    clause with no subject of its own, or with "you" ("could you take me to ..."); of several,
+    the last one with an object ("go to the bedroom and find the lamp"); None when there is none."""
     commands = []
     for t in sent:
         if _misread_verb(t):
@@ -237,7 +237,10 @@ def _command_verb(doc, sent):
             continue
         if not subjects or subjects[0].lower_ == "you":
             commands.append(t)
-    return next((t for t in reversed(commands) if _object_of(doc, t) is not None), commands[0] if commands else None)
+    if not commands:
+        return None
+    found = [(t, _object_of(doc, t)) for t in reversed(commands)]
+    return next(((t, obj) for t, obj in found if obj is not None), found[-1])
 
 
 def _misread_verb(token) -> bool:
@@ -261,8 +264,9 @@ def _object_of(doc, verb) -> int | None:
             if obj is not None and (obj.pos_ in _NOUNS + ("PRON",) or obj.lower_ in STAND_INS):
                 return obj.i
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
-            if clause is not None and _object_of(doc, clause) is not None:
-                return _object_of(doc, clause)
+            found = _object_of(doc, clause) if clause is not None else None
+            if found is not None:
+                return found
     for child in verb.children:
         if child.dep_ in _CLAUSES and child.pos_ in ("VERB", "AUX"):
             found = _object_of(doc, child)
@@ -285,9 +289,10 @@ def _attribute_of(doc, root) -> int | None:
 
 
 def _antecedent(doc, index: int) -> int:
-    """The noun "one" stands for: the last plural noun before it ("of the three pillows, the
-    one in the middle", "facing the monitors, pick the one on the left"); "one" itself when
-    there is none."""
+    """The noun a stand-in word points to: "one of the seats" -> seats; "one" -> the last plural
+    noun before it ("of the three pillows, the one in the middle"); "it"/"them" -> the first noun
+    named before it as subject or object ("which vase holds tulips? take me to it"); the word
+    itself when there is none."""
     of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
     named = next((g.i for g in of.children if g.dep_ == "pobj" and g.pos_ in _NOUNS), None) if of else None
     if named is not None:  # "one of the seats"

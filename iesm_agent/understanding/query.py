@@ -10,7 +10,7 @@ from types import MappingProxyType, SimpleNamespace
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
-from .parse import Structure, normalise, parse_request
+from .parse import Structure, Word, normalise, parse_request
 from .text import Slot, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
@@ -146,28 +146,37 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     (not a room); None otherwise (the caller reads the phrase from the word order)."""
     if structure.target is None:
         return None
-    word = structure.words[structure.target]
-    first = structure.words[structure.phrase[0]].start
-    at = [getattr(t, "at", -1) for t in surface]
-    index = next((i for i, a in enumerate(at) if word.start <= a < word.start + len(word.text)), None)
+    index = _surface_index(surface, structure.words[structure.target])
     if index is None:
         return None
+    first = structure.words[structure.phrase[0]].start
+    phrase_start = next((i for i, t in enumerate(surface) if getattr(t, "at", -1) >= first), index)
     head = next((s for s in spans if s.start <= index < s.end), None)
     if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
-        start = next((i for i, a in enumerate(at) if a >= first), head.start)
-        return _Target(min(start, head.start), head.end, None, structure.target)
+        return _Target(min(phrase_start, head.start), head.end, None, structure.target)
     if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
     if any(s.has("cue") and s.end - s.start > 1 and s.start <= index < s.end for s in spans):
         return None  # the object of a use ("where can I take a bath")
     following = {s.start: s for s in spans if s.has("cat")}
-    while head.end in following and at[head.end] == at[head.end - 1] + len(surface[head.end - 1]) + 1:
+    while head.end in following and _adjacent(surface, head.end):
         head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
-    start = min(next((i for i, a in enumerate(at) if a >= first), head.start), head.start)
+    start = min(phrase_start, head.start)
     described = {s.end: s for s in spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)}
-    while start in described and at[start] == at[start - 1] + len(surface[start - 1]) + 1:
+    while start in described and _adjacent(surface, start):
         start = described[start].start  # adjectives right before the phrase are its own, whatever the parse
     return _Target(start, head.end, head, structure.target)
+
+
+def _surface_index(surface: list[str], word: Word) -> int | None:
+    """Index of the surface token that the parsed `word` covers, or None (dropped or absent)."""
+    return next((i for i, t in enumerate(surface) if word.start <= getattr(t, "at", -1) < word.start + len(word.text)),
+                None)
+
+
+def _adjacent(surface: list[str], i: int) -> bool:
+    """True when surface token `i` follows token `i - 1` with one space between, as written."""
+    return getattr(surface[i], "at", -1) == getattr(surface[i - 1], "at", -2) + len(surface[i - 1]) + 1
 
 
 def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
@@ -321,11 +330,8 @@ def _named(info) -> bool:
 def _leaves_a_room(reading: _Reading) -> bool:
     """True when what the request wants out of is a room ("get me out of the garage")."""
     left = reading.structure.leaving
-    if left is None:
-        return False
-    at = reading.structure.words[left].start
-    index = next((i for i, t in enumerate(reading.surface) if getattr(t, "at", -1) == at), None)
-    return any(s.has("room") and s.start <= index < s.end for s in reading.spans) if index is not None else False
+    index = None if left is None else _surface_index(reading.surface, reading.structure.words[left])
+    return index is not None and any(s.has("room") and s.start <= index < s.end for s in reading.spans)
 
 
 def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],

@@ -293,7 +293,7 @@ def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[n
         return hit
     lex = load_lexicon()
     records = [r for _, r in parsed]
-    rows = [_components(lex, q, r) for r in records]
+    rows = [_components(lex, q, r, memo) for r in records]
     out = (np.array([i for i, _ in parsed], dtype=np.int64), records,
            np.array(rows, dtype=np.float64).reshape(len(rows), _N_COMPONENTS))
     if len(memo) < 4096:
@@ -301,12 +301,11 @@ def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[n
     return out
 
 
-def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
+def _components(lex, q: QueryInfo, r: Record, memo: dict) -> tuple[float, ...]:
     """label, room, description, affordance, text overlap, embedding (filled in later), kin.
 
     Memoised per query on the parts candidates share (single concepts, rooms, attribute slots),
     so a value that recurs across candidates is scored once per query."""
-    memo = _memo(q)
     label = afford = kin = 0.0
     for cc, wc in r.concepts:
         key = ("c", cc)
@@ -325,17 +324,16 @@ def _components(lex, q: QueryInfo, r: Record) -> tuple[float, ...]:
                                 if r.room is not None), default=0.0)
     desc = 0.0
     if q.slots:
-        desc = sum(_slot_match(lex, q, i, r) for i in range(len(q.slots))) / len(q.slots)
+        desc = sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
     text = len(q.overlap & r.stems) / len(q.overlap) if q.overlap else 0.0
     return label, room, desc, afford, text, 0.0, kin
 
 
-def _slot_match(lex, q: QueryInfo, index: int, r: Record) -> float:
+def _slot_match(lex, q: QueryInfo, index: int, r: Record, memo: dict) -> float:
     """Best match of the query's `index`-th attribute against a candidate: the same words 1.0,
     the same words up to shade 0.9, its words in the candidate's text 0.85, the same family
     0.7-0.8, a related family 0.4; -0.5 when the candidate says the opposite and nothing matches
     ("the biggest table" against a small table)."""
-    memo = _memo(q)
     best = 0.0
     for other in r.slots:
         key = ("s", index, other)
