@@ -73,7 +73,9 @@ def _misspelt_label(phrase: str, options: Sequence[str]) -> str | None:
     label "gizmo": one letter doubled), by the lexicon's spelling rules; None otherwise."""
     lex = load_lexicon()
     words = {w: option for option in options for w in lex.tokens(option) if w.isalpha() and len(w) >= 4}
-    found = {words[fixed] for token in lex.tokens(phrase) if (fixed := lex.closest(token, frozenset(words))) != token}
+    known = frozenset(words)
+    found = {words[fixed] for token in lex.tokens(phrase) if token.isalpha() and len(token) >= 4
+             and (fixed := lex.closest(token, known)) != token}
     return found.pop() if len(found) == 1 else None
 
 
