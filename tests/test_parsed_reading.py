@@ -27,6 +27,10 @@ def _target(text: str) -> str | None:
     ("Looking at the bookcases, pick the one on the right.", "bookcases"),    # "one" stands for a plural named before
     ("Grab one of the cushions from the couch", "cushions"),
     ("Which vase holds the tulips? Take me to it.", "vase"),                  # "it" points back
+    ("chair nearest door", "chair"),                                        # telegraphic: the superlative's noun
+    ("please walk to the kettle closest to the toaster", "kettle"),          # "kettle closest" tagged as one word
+    ("the trash can is grey. it is by the back door.", "trash"),              # "can" tagged as a verb: its compound
+    ("a desk stands by the window. there are papers on it.", "desk"),         # "there are ..." states, not asks
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target

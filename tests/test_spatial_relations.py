@@ -5,6 +5,8 @@ import json
 
 import pytest
 
+from iesm_agent.understanding.spatial import parse_query
+
 from iesm_agent.config import RetrievalConfig
 from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.retrieval import Retriever
@@ -143,3 +145,24 @@ def test_a_relation_whose_landmark_cannot_be_read_gives_no_ranking(room):
 ])
 def test_negation_and_opposite(room, query, best):
     assert spatial(room, query)[0] == best
+
+
+def _relations(text: str) -> list[tuple[str, list[tuple[str, ...]], str]]:
+    return [(r.kind, r.landmarks, r.landmark_where) for r in parse_query(text).relations]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a landmark is what the relation's words govern, not the next noun anywhere after them
+    ("the vase in the middle of the room with a rug under it", [("middle", [], ""), ("above", [("rug",)], "")]),
+    # a side of a landmark, through the noun the side word modifies
+    ("the stool on the left-hand side of the counter", [("left", [("counter",)], "")]),
+    # the thing placed relative to the target points back to it: the relation seen from the target
+    ("this is a sofa. there is a lamp to its right.", [("left", [("lamp",)], "")]),
+    # a side word on a landmark says which landmark, not where the target is
+    ("the mug on the left shelf", [("on", [("shelf",)], "left")]),
+    # a verb's particle is not a place, an intensifier is not a side
+    ("turn on the desk lamp", []),
+    ("the towel right beside the sink", [("near", [("sink",)], "")]),
+])
+def test_relations_follow_the_parse(text, expected):
+    assert _relations(text) == expected

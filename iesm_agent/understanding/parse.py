@@ -98,6 +98,15 @@ class Structure:
             noun = self.words[noun].head  # "green glass shade": the shade's
         return noun
 
+    def dominates(self, ancestor: int, k: int) -> bool:
+        """True when word `k` lies in the parse subtree of word `ancestor` (itself included)."""
+        while k != ancestor:
+            head = self.words[k].head
+            if head == k:
+                return False
+            k = head
+        return True
+
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""
         for k, word in enumerate(self.words):
@@ -198,7 +207,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if command is not None:
         return "request", command[1]
     if root.pos_ not in ("VERB", "AUX") and subject is None:
-        return "request", root.i  # a bare noun phrase: "the lamp on the left", "something to sit on"
+        return "request", _telegraphic_target(root)  # a bare noun phrase: "the lamp on the left", "something to sit on"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and subject.lower_ in _PERSONAL:
         found = _object_of(doc, root)
@@ -208,13 +217,35 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return ("request" if question else "personal"), found
     if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
         return ("request" if question else "description"), _attribute_of(doc, root)
-    if subject is not None and subject.pos_ in _NOUNS:
-        return ("request" if question else "description"), subject.i
+    if subject is not None and _noun_of(subject) is not None:
+        return ("request" if question else "description"), _noun_of(subject)
     found = _object_of(doc, root)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in _NOUNS), None)
     return ("request" if question else "description"), found
+
+
+def _noun_of(token) -> int | None:
+    """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
+    the parse puts where a noun goes but tags otherwise ("the trash can is", "the mug closest to"),
+    the noun compounded with it; else None."""
+    if token.pos_ in _NOUNS:
+        return token.i
+    if token.pos_ in ("PRON", "DET", "NUM"):
+        return None
+    return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
+                 and c.pos_ in _NOUNS and c.i == token.i - 1), None)
+
+
+def _telegraphic_target(root) -> int:
+    """The head of a bare noun phrase, or in a telegraphic one whose superlative the parser took
+    for a modifier ("lamp nearest window"), the noun before the superlative."""
+    lefts = list(root.lefts)
+    for k, word in enumerate(lefts):
+        if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in _NOUNS:
+            return lefts[k - 1].i
+    return root.i
 
 
 def _names_after_copula(root) -> bool:
@@ -230,7 +261,8 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
     for t in sent:
         if _misread_verb(t):
             commands.append(t)
-        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep"):
+        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep") \
+                or t.lemma_ == "be":  # "there are pillows on it" states, it does not ask
             continue
         subjects = [c for c in t.children if c.dep_ in ("nsubj", "nsubjpass")]
         if any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children):
@@ -256,13 +288,17 @@ def _object_of(doc, verb) -> int | None:
     ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
     dust the frame", "you should pick the footstool")."""
     for child in verb.children:
-        if child.dep_ in ("dobj", "attr", "oprd") and (child.pos_ in _NOUNS or child.lower_ in ("one", "ones")):
+        if child.dep_ in ("dobj", "attr", "oprd") and child.lower_ in ("one", "ones"):
             return child.i
+        if child.dep_ in ("dobj", "attr", "oprd") and _noun_of(child) is not None:
+            return _noun_of(child)
     for child in verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
-            if obj is not None and (obj.pos_ in _NOUNS + ("PRON",) or obj.lower_ in STAND_INS):
+            if obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS):
                 return obj.i
+            if obj is not None and _noun_of(obj) is not None:
+                return _noun_of(obj)
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
             found = _object_of(doc, clause) if clause is not None else None
             if found is not None:

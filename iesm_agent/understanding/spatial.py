@@ -8,8 +8,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..lexicon import load_lexicon
-from .clauses import INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
+from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
+from .parse import normalise, parse_request
 from .query import analyse_query
 from .text import lemmatise
 
@@ -39,13 +40,14 @@ _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
+#: relations that say nothing without a landmark
+_NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
 _LANDMARK_ATTRS = ("color", "material", "size")
 SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
 #: "on" after these verbs states a use, not a place ("where can I work on my computer")
 _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
               "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
-_INTENSIFIED = {"below", "above", "under", "beneath", "next", "by", "beside", "behind", "in", "on", "over", "near"}
 
 
 @dataclass
@@ -59,7 +61,7 @@ class Relation:
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
     value: str = ""
     order: int = 0
-    landmark_where: str = ""  # "corner" / "middle" / "wall": which of the landmark's instances
+    landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of the landmark's instances
     negated: bool = False     # "the bowl that is not on the shelf"
 
 
@@ -89,7 +91,11 @@ class _Reader:
     def __init__(self, text: str):
         self.text = text
         lex = self.lex = load_lexicon()
-        self.toks = toks = [t for t in lex.spell(lex.tokens(text)) if t not in lex.words["skip"] or t in ("one",)]
+        corrected = normalise(lex.respell(text))
+        self.structure = parse_request(corrected)
+        kept = [(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"] or t in ("one",)]
+        self.toks = toks = [t for t, _ in kept]
+        self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas)
         self.cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
@@ -105,6 +111,88 @@ class _Reader:
         self.last_landmark_end = -1
         self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
+        self.cue_word: int | None = None  # the parsed word of the relation cue being read
+        self.target_at = self.parsed_target()
+        if self.target_at is not None:
+            self.used.add(self.target_at)
+
+    def span_at(self, word: int | None) -> int | None:
+        """Start of the category span that holds the parsed `word`, or None."""
+        k = next((i for i, w in enumerate(self.words) if w == word), None) if word is not None else None
+        return next((s for s, span in self.cat_at.items() if span.start <= k < span.end), None) if k is not None else None
+
+    def parsed_target(self) -> int | None:
+        """Start of the category span of the target noun the parse names, or None."""
+        return self.span_at(self.structure.target)
+
+    def in_cue_object(self, j: int) -> bool:
+        """True when the category span at `j` lies in what the current cue governs ("the middle of
+        [the room]", "the right side of [the table]"), or the parse gives the cue no noun at all."""
+        below = self.cue_object()
+        if below is None:
+            return True
+        span = self.cat_at[j]
+        return any(w in below for w in self.words[span.start:span.end])
+
+    def cue_object(self) -> set[int] | None:
+        """Parsed words the current cue governs ("the right side of [the table]": through the noun
+        the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
+        cue, st = self.cue_word, self.structure
+        if cue is None:
+            return None
+        cue = self.cue_noun()
+        below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)}
+        return below if any(st.words[k].pos in ("NOUN", "PROPN", "PRON") for k in below) else None
+
+    def points_back(self, word: int) -> bool:
+        """True when the parsed `word` stands for the target: a pronoun ("its left", "behind it")
+        or the target's kind named again ("to the left of the file cabinet")."""
+        if self.structure.words[word].text.lower() in BACK_REFERENCES | {"its"}:
+            return True
+        j = self.span_at(word)
+        return j is not None and self.target_at is not None and j != self.target_at \
+            and self.cat_at[j].values("cat") == self.cat_at[self.target_at].values("cat")
+
+    def cue_noun(self) -> int:
+        """The parsed word the current cue stands for (`noun_of`)."""
+        return self.noun_of(self.cue_word)
+
+    def noun_of(self, k: int | None) -> int | None:
+        """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
+        st = self.structure
+        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[st.words[k].head].pos in ("NOUN", "PROPN") \
+                and st.words[k].head != k:
+            k = st.words[k].head
+        return k
+
+    def side_of(self) -> bool:
+        """True when the side word being read names a side of a landmark: the noun it stands for
+        has an "of" ("the right side of the table", "the left end of a desk")."""
+        k, st = self.cue_noun(), self.structure
+        of = next((n for n, w in enumerate(st.words) if w.head == k and w.dep == "prep" and w.text.lower() == "of"), None)
+        if of is None:
+            return False
+        owner = self.span_at(k)  # "the left chair of the two chairs": which of them, not a landmark
+        objects = [self.span_at(n) for n, w in enumerate(st.words) if w.head == of and w.dep == "pobj"]
+        return owner is None or not any(j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
+                                        for j in objects)
+
+    def located_by_pronoun(self) -> int | None:
+        """Start of the category span of what the current cue places relative to the target when
+        its object only points back ("there is a trash can [to its left]", "it has a lamp [behind
+        it]"): the noun the phrase hangs on, or the subject or object of its verb; else None."""
+        below, st = self.cue_object(), self.structure
+        if below is None or not any(self.points_back(k) for k in below) \
+                or any(self.span_at(k) is not None and not self.points_back(k) for k in below):
+            return None
+        k = st.words[self.cue_word].head
+        while st.words[k].pos == "ADP" and st.words[k].head != k:
+            k = st.words[k].head  # "to [its left]": the phrase's own head
+        if st.words[k].pos not in ("NOUN", "PROPN"):
+            k = next((c for c in range(len(st.words)) if st.words[c].head == k and c != k
+                      and st.words[c].dep in ("attr", "nsubj", "dobj") and self.span_at(c) is not None), None)
+        j = self.span_at(k)
+        return j if j is not None and j not in self.used and not self.points_back(k) else None
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards over attributes, colour suffixes and
@@ -121,7 +209,9 @@ class _Reader:
         return tuple(found)
 
     def next_cat(self, pos: int) -> int | None:
-        return next((j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used), None)
+        """Start of the first free category span from `pos` within what the current cue governs."""
+        return next((j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
+                     and self.in_cue_object(j)), None)
 
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`."""
@@ -167,6 +257,9 @@ class _Reader:
         if cue is None:
             return i + 1
         words, kind = cue
+        self.cue_word = self.words[i + len(words) - 1]
+        if self.structure.words[self.words[i]].dep == "prt":
+            return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
         if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals) and self.inverse(i, kind):
@@ -185,6 +278,7 @@ class _Reader:
             self.out.relations.remove(owner)
             self.used.discard(j)
         rel = Relation(INVERSE_RELATION[kind])
+        self.cue_word = None  # the clause's noun comes before its stranded preposition
         self.landmark(rel, j)
         self.out.relations.append(rel)
         return True
@@ -194,7 +288,8 @@ class _Reader:
         toks, out = self.toks, self.out
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
-        if kind == "on" and (nxt in ("left", "right", "top") or (before >= 0 and toks[before] in _USE_VERBS)):
+        side_noun = nxt in ("left", "right", "top") and self.span_at(self.noun_of(self.words[i])) is None
+        if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
             out.relations.append(Relation("wall"))
@@ -212,7 +307,8 @@ class _Reader:
             self.landmark(rel, i)  # "the middle of the bed": relative to that object
             out.relations.append(rel)
             return i
-        if kind == "right" and nxt in _INTENSIFIED:
+        if kind == "right" and nxt != "of" and i < len(toks) and self.structure.words[self.words[i]].pos == "ADP" \
+                and self.structure.words[self.cue_word].dep != "pobj":
             return i  # "right below the sink": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
@@ -235,13 +331,26 @@ class _Reader:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
         toks, out, rel = self.toks, self.out, Relation(kind)
         if kind in ("left", "right", "front", "behind"):
-            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]):
+            owner = self.span_at(self.cue_noun())
+            if owner is not None and owner != self.target_at and self.target_at is not None and not self.side_of():
+                # "on the left nightstand": which of the landmark's instances, not the target's side
+                described = next((r for r in out.relations if owner in self.taken.get(id(r), ())), None)
+                if described is not None and not described.landmark_where:
+                    described.landmark_where = kind
+                return i
+            located = self.located_by_pronoun()
+            if located is not None:  # "a trash can to its left": the target is right of the trash can
+                rel = Relation(INVERSE_RELATION[kind])
+                self.cue_word = None
+                self.landmark(rel, located)
+            elif nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of():
                 self.landmark(rel, i)
             out.relations.append(rel)
             return i
         if kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
             if self.landmark(rel, i):
                 frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
+                self.cue_word = None if frm is None else self.words[frm]
                 if frm is not None and self.landmark(rel, frm):
                     i = self.last_landmark_end
             out.relations.append(rel)
@@ -271,7 +380,9 @@ class _Reader:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
         toks, out, taken = self.toks, self.out, self.taken
-        target = next((j for j in sorted(self.cat_at) if j not in self.used), None)
+        target = self.target_at
+        if target is None:
+            target = next((j for j in sorted(self.cat_at) if j not in self.used), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         info = analyse_query(self.text)
@@ -284,6 +395,8 @@ class _Reader:
                 out.relations = [r for r in out.relations if r is not first]
                 if not any(taken.get(id(r)) for r in out.relations):
                     out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
+        # a relation to a landmark the request does not name ("the nearest sofa") says nothing
+        out.relations = [r for r in out.relations if r.landmarks or r.kind not in _NEEDS_LANDMARK]
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
