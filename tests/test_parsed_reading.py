@@ -31,6 +31,8 @@ def _target(text: str) -> str | None:
     ("please walk to the kettle closest to the toaster", "kettle"),          # "kettle closest" tagged as one word
     ("the trash can is grey. it is by the back door.", "trash"),              # "can" tagged as a verb: its compound
     ("a desk stands by the window. there are papers on it.", "desk"),         # "there are ..." states, not asks
+    ("It's cold in here, so bring me to one of the blankets.", "blankets"),  # a command after a remark on "it"
+    ("I'm at the desk and I want the lamp behind me.", "lamp"),               # where the speaker is is not the goal
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target

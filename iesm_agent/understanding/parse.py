@@ -201,16 +201,19 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = next((t for t in sent if not t.is_punct and not t.is_space), root)
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
+    command = _command(doc, sent)
+    if command is not None and command[1] is not None:  # "it's dark, so take me to a lamp"
+        return "request", command[1]
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and not _names_after_copula(root):
         return "continuation", None
-    command = _command(doc, sent)
     if command is not None:
-        return "request", command[1]
+        return "request", None
     if root.pos_ not in ("VERB", "AUX") and subject is None:
         return "request", _telegraphic_target(root)  # a bare noun phrase: "the lamp on the left", "something to sit on"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and subject.lower_ in _PERSONAL:
-        found = _object_of(doc, root)
+        # "I'm at the foot of the bed, and I want ...": where the speaker is, not where to go
+        found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
         if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
                                   or doc[found].head.lemma_ in _ACTIVITY_VERBS):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
@@ -283,16 +286,16 @@ def _misread_verb(token) -> bool:
             and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS for c in token.children))
 
 
-def _object_of(doc, verb) -> int | None:
+def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition
     ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
-    dust the frame", "you should pick the footstool")."""
-    for child in verb.children:
+    dust the frame", "you should pick the footstool"); with `clauses_only`, only the latter."""
+    for child in () if clauses_only else verb.children:
         if child.dep_ in ("dobj", "attr", "oprd") and child.lower_ in ("one", "ones"):
             return child.i
         if child.dep_ in ("dobj", "attr", "oprd") and _noun_of(child) is not None:
             return _noun_of(child)
-    for child in verb.children:
+    for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
             if obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS):

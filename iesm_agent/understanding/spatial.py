@@ -20,7 +20,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("below",): "below", ("above",): "above", ("over",): "above", ("next", "to"): "near",
     ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
     ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
-    ("closer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
+    ("closer",): "closest", ("nearer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
     ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
     ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
