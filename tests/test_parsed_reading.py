@@ -32,7 +32,11 @@ def _target(text: str) -> str | None:
     ("the trash can is grey. it is by the back door.", "trash"),              # "can" tagged as a verb: its compound
     ("a desk stands by the window. there are papers on it.", "desk"),         # "there are ..." states, not asks
     ("It's cold in here, so bring me to one of the blankets.", "blankets"),  # a command after a remark on "it"
-    ("I'm at the desk and I want the lamp behind me.", "lamp"),               # where the speaker is is not the goal
+    ("I'm at the desk and I want the lamp behind me.", "lamp"),
+    ("Face the sofa. The lamp you want is on the right.", "lamp"),            # "face ..." sets the viewpoint
+    ("face the fireplace, the armchair on the left", "armchair"),
+    ("Chair nearest to the radiator", "chair"),                              # not "head to": a superlative between
+    ("The mug is on the shelf. Not on the desk.", "mug"),                    # a negated fragment rules out               # where the speaker is is not the goal
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target
@@ -111,3 +115,12 @@ def test_the_reading_is_immutable_and_shared():
     with pytest.raises(TypeError):
         info.targets["kettle"] = 1.0
     assert info.targets == {"cup": 1.0} and info.rooms == {"kitchen": 1.0}
+
+
+def test_lexicon_phrases_stop_at_punctuation_and_an_appositive_part_describes_the_target():
+    lex = load_lexicon()
+    assert [s.end - s.start for s in lex.scan(["window", "door"])] == [2]   # one phrase when written together
+    assert [s.end - s.start for s in lex.scan(["window", "door"], frozenset({1}))] == [1, 1]
+    assert dict(analyse_query("Face the window. The door is on the left.").targets) == {"door": 1.0}
+    info = analyse_query("floor lamp, red shade")
+    assert info.named and ("color", "red") in info.attrs

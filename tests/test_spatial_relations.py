@@ -166,3 +166,9 @@ def _relations(text: str) -> list[tuple[str, list[tuple[str, ...]], str]]:
 ])
 def test_relations_follow_the_parse(text, expected):
     assert _relations(text) == expected
+
+
+def test_an_imperative_face_sets_the_viewpoint_a_noun_face_does_not():
+    face = parse_query("Face the sofa. The lamp you want is on the right.")
+    assert face.target == ("lamp",) and face.facing == ("sofa",)
+    assert parse_query("the clock face by the door").facing == ()

@@ -164,21 +164,23 @@ class Lexicon:
         return self._targets
 
     # -- phrases ----------------------------------------------------------------------------
-    def scan(self, lemmas: list[str]) -> list[Span]:
-        """Greedy longest-match of lexicon phrases over `lemmas`, left to right.
+    def scan(self, lemmas: list[str], breaks: frozenset[int] = frozenset()) -> list[Span]:
+        """Greedy longest-match of lexicon phrases over `lemmas`, left to right; no phrase
+        spans a break (a token index in `breaks` starts a new clause: "the window. The door").
 
         A shade followed by a colour ("light blue") is one colour span."""
         spans: list[Span] = []
         i, n = 0, len(lemmas)
         while i < n:
-            if lemmas[i] in self.shades and i + 1 < n:
+            limit = min((k for k in breaks if k > i), default=n)
+            if lemmas[i] in self.shades and i + 1 < limit:
                 nxt = self.phrases.get((lemmas[i + 1],), ())
                 colors = tuple(kv for kv in nxt if kv[0] == "color")
                 if colors and (lemmas[i], lemmas[i + 1]) not in self.phrases:
                     spans.append(Span(i, i + 2, colors))
                     i += 2
                     continue
-            for size in range(min(self.max_len, n - i), 0, -1):
+            for size in range(min(self.max_len, limit - i), 0, -1):
                 kinds = self.phrases.get(tuple(lemmas[i:i + size]))
                 if kinds:
                     spans.append(Span(i, i + size, kinds))

@@ -23,6 +23,8 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
+#: commands that set where the speaker looks from, not where to go ("face the window, ...")
+_VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
 _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
@@ -181,7 +183,7 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     names a target; else the first description ("This is a brown chair."); else the last
     statement about the speaker that names one ("I want to dust the frame"); never a sentence that
     continues an earlier one ("It is next to the desk.")."""
-    for kinds, pick in ((("request",), -1), (("description",), 0), (("personal",), -1)):
+    for kinds, pick in ((("request",), -1), (("description",), 0), (("personal",), -1), (("viewpoint",), 0)):
         found = [i for i, (kind, target) in enumerate(readings) if kind in kinds and target is not None]
         if found:
             return found[pick]
@@ -201,7 +203,14 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = next((t for t in sent if not t.is_punct and not t.is_space), root)
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
+    if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
+        return "continuation", None  # "Not on the floor.": rules out, says nothing new about the target
     command = _command(doc, sent)
+    if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the window. The door is ..."
+        found = command[1]
+        shown = next((c.i for c in doc[found].children if c.dep_ == "appos" and c.pos_ in _NOUNS), None) \
+            if found is not None else None
+        return ("request", shown) if shown is not None else ("viewpoint", found)
     if command is not None and command[1] is not None:  # "it's dark, so take me to a lamp"
         return "request", command[1]
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and not _names_after_copula(root):
@@ -283,7 +292,9 @@ def _misread_verb(token) -> bool:
     the rug"): a bare noun opening a clause, with a preposition of motion after it."""
     opens = token.i == token.sent.start or token.nbor(-1).is_punct
     return (token.pos_ in _NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
-            and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS for c in token.children))
+            and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS
+                    and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
+                    for c in token.children))  # "Head (over) to", not "Table nearest to"
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:

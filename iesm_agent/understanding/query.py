@@ -11,7 +11,7 @@ from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
 from .parse import Structure, Word, normalise, parse_request
-from .text import Slot, lemmatise, modifier_spans, read_slots, stem
+from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
 _UNSPECIFIC = frozenset({"object"})
@@ -212,6 +212,8 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     owner = structure.words[noun]
     if owner.dep == "attr" or owner.start in described:  # "in brown leather": the material is the target's
         return False
+    if owner.dep == "appos" and owner.head == target.word:  # "desk light, green shade": a part of the target
+        return False
     via = structure.words[owner.head]
     if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
         return False
@@ -260,7 +262,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
-    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas), preamble, ruled_out)
+    breaks = clause_breaks(corrected, [(t, getattr(t, "at", None)) for t in surface])
+    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
 
 
 def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:

@@ -12,7 +12,7 @@ from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import normalise, parse_request
 from .query import analyse_query
-from .text import lemmatise
+from .text import clause_breaks, lemmatise
 
 _CUES: dict[tuple[str, ...], str] = {
     ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
@@ -24,7 +24,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
     ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
-    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing",
+    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing", ("face",): "facing",
     ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
     ("across", "from"): "opposite", ("across",): "opposite",
 }
@@ -97,7 +97,7 @@ class _Reader:
         self.toks = toks = [t for t, _ in kept]
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
-        spans = lex.scan(lemmas)
+        spans = lex.scan(lemmas, clause_breaks(corrected, kept))
         self.cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
                        and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
                                 and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
@@ -260,6 +260,8 @@ class _Reader:
         self.cue_word = self.words[i + len(words) - 1]
         if self.structure.words[self.words[i]].dep == "prt":
             return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
+        if words == ("face",) and self.structure.words[self.words[i]].pos != "VERB":
+            return i + 1  # "the clock face": a noun, not "face the window"
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
         if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals) and self.inverse(i, kind):
@@ -288,7 +290,7 @@ class _Reader:
         toks, out = self.toks, self.out
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
-        side_noun = nxt in ("left", "right", "top") and self.span_at(self.noun_of(self.words[i])) is None
+        side_noun = nxt in ("left", "right") and self.span_at(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
