@@ -163,6 +163,11 @@ def _relations(text: str) -> list[tuple[str, list[tuple[str, ...]], str]]:
     # a verb's particle is not a place, an intensifier is not a side
     ("turn on the desk lamp", []),
     ("the towel right beside the sink", [("near", [("sink",)], "")]),
+    # "at" a thing is by it; at a part of it or at what one looks at is not
+    ("the stool at the counter", [("near", [("counter",)], "")]),
+    ("the stool at the far end of the counter", []),
+    # any relation placing another thing on a re-mentioned target holds from the target's side
+    ("this is a shelf. there is a vase on the shelf.", [("with", [("vase",)], "")]),
 ])
 def test_relations_follow_the_parse(text, expected):
     assert _relations(text) == expected

@@ -23,7 +23,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("closer",): "closest", ("nearer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
     ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
-    ("centre",): "middle", ("against",): "wall", ("along",): "wall", ("left",): "left",
+    ("centre",): "middle", ("at",): "near", ("against",): "wall", ("along",): "wall", ("left",): "left",
     ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing", ("face",): "facing",
     ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
     ("across", "from"): "opposite", ("across",): "opposite",
@@ -40,6 +40,8 @@ _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
+#: verbs after which "at" names what is looked at, not what the target is by
+_LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
 #: relations that say nothing without a landmark
 _NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
@@ -262,6 +264,8 @@ class _Reader:
             return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
         if words == ("face",) and self.structure.words[self.words[i]].pos != "VERB":
             return i + 1  # "the clock face": a noun, not "face the window"
+        if words == ("at",) and not self.beside(self.words[i]):
+            return i + 1
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
         if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals) and self.inverse(i, kind):
@@ -329,6 +333,26 @@ class _Reader:
             self.pending_ordinal.value = "landmark"
         return i
 
+    def beside(self, at: int | None) -> bool:
+        """True when "at" places the target by a thing ("the chair at the desk"): its object is a
+        category itself, not a part of one ("at the end of the table") or a place looked at."""
+        st = self.structure
+        if at is None or st.words[st.words[at].head].text.lower() in _LOOKING:
+            return False
+        return any(w.head == at and w.dep == "pobj" and self.span_at(k) is not None for k, w in enumerate(st.words))
+
+    def inverse_by_pronoun(self, kind: str) -> bool:
+        """Read the relation seen from the target when the cue places another thing relative to it
+        ("a trash can to its left", "a box of tissues on the cabinet"); False when it does not."""
+        located = self.located_by_pronoun() if kind in INVERSE_RELATION else None
+        if located is None:
+            return False
+        rel = Relation(INVERSE_RELATION[kind])
+        self.cue_word = None
+        self.landmark(rel, located)
+        self.out.relations.append(rel)
+        return True
+
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
         toks, out, rel = self.toks, self.out, Relation(kind)
@@ -340,12 +364,9 @@ class _Reader:
                 if described is not None and not described.landmark_where:
                     described.landmark_where = kind
                 return i
-            located = self.located_by_pronoun()
-            if located is not None:  # "a trash can to its left": the target is right of the trash can
-                rel = Relation(INVERSE_RELATION[kind])
-                self.cue_word = None
-                self.landmark(rel, located)
-            elif nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of():
+            if self.inverse_by_pronoun(kind):
+                return i
+            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of():
                 self.landmark(rel, i)
             out.relations.append(rel)
             return i
@@ -362,6 +383,8 @@ class _Reader:
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
             out.relations.append(rel)
+            return i
+        if self.inverse_by_pronoun(kind):
             return i
         if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = self.next_cat(i)
