@@ -36,7 +36,10 @@ def _target(text: str) -> str | None:
     ("Face the sofa. The lamp you want is on the right.", "lamp"),            # "face ..." sets the viewpoint
     ("face the fireplace, the armchair on the left", "armchair"),
     ("Chair nearest to the radiator", "chair"),                              # not "head to": a superlative between
-    ("The mug is on the shelf. Not on the desk.", "mug"),                    # a negated fragment rules out               # where the speaker is is not the goal
+    ("The mug is on the shelf. Not on the desk.", "mug"),                    # a negated fragment rules out
+    ("The object is a stool. It stands by the bar.", "stool"),               # a placeholder named by its copula
+    ("Facing the sofa, it's on the table, and is the vase on the right.", "vase"),  # a joined copula names it
+    ("Make your way to the armchair by the lamp.", "armchair"),              # the way is how, not where               # where the speaker is is not the goal
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target

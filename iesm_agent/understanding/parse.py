@@ -23,6 +23,8 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
+#: nouns that stand for an object the sentence goes on to name ("the object is a lamp")
+_PLACEHOLDERS = frozenset({"object", "thing", "item"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
@@ -228,7 +230,11 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
         return ("request" if question else "personal"), found
     if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
-        return ("request" if question else "description"), _attribute_of(doc, root)
+        named = _copula_attribute(root)
+        return ("request" if question else "description"), named if named is not None else _attribute_of(doc, root)
+    if subject is not None and subject.lower_ in _PLACEHOLDERS and _names_after_copula(root):
+        attribute = next(c.i for c in root.children if c.dep_ == "attr" and c.pos_ in _NOUNS)
+        return ("request" if question else "description"), attribute  # "the object is a lamp"
     if subject is not None and _noun_of(subject) is not None:
         return ("request" if question else "description"), _noun_of(subject)
     found = _object_of(doc, root)
@@ -260,9 +266,16 @@ def _telegraphic_target(root) -> int:
     return root.i
 
 
+def _copula_attribute(root) -> int | None:
+    """The noun a copula names ("this is a chair", "it's on the bed and is the pillow on the
+    left": the copula or one joined to it), or None."""
+    return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
+                 for c in verb.children if c.dep_ == "attr" and c.pos_ in _NOUNS), None)
+
+
 def _names_after_copula(root) -> bool:
     """True for "this is a chair" / "it is a wooden table": a copula whose attribute is a noun."""
-    return root.lemma_ == "be" and any(c.dep_ == "attr" and c.pos_ in _NOUNS for c in root.children)
+    return _copula_attribute(root) is not None
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
@@ -302,6 +315,11 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
     dust the frame", "you should pick the footstool"); with `clauses_only`, only the latter."""
     for child in () if clauses_only else verb.children:
+        if child.lower_ == "way":  # "make your way to the chair": the way is how, the chair is where
+            found = _object_of(doc, child)
+            if found is not None:
+                return found
+            continue
         if child.dep_ in ("dobj", "attr", "oprd") and child.lower_ in ("one", "ones"):
             return child.i
         if child.dep_ in ("dobj", "attr", "oprd") and _noun_of(child) is not None:

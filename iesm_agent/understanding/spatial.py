@@ -124,8 +124,13 @@ class _Reader:
         return next((s for s, span in self.cat_at.items() if span.start <= k < span.end), None) if k is not None else None
 
     def parsed_target(self) -> int | None:
-        """Start of the category span of the target noun the parse names, or None."""
-        return self.span_at(self.structure.target)
+        """Start of the category span of the target noun the parse names; else of the first span
+        naming what the shared reading found as the target; else None."""
+        found = self.span_at(self.structure.target)
+        if found is not None:
+            return found
+        named = {c for c, w in analyse_query(self.text).targets.items() if w >= 1.0}
+        return next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
 
     def in_cue_object(self, j: int) -> bool:
         """True when the category span at `j` lies in what the current cue governs ("the middle of
