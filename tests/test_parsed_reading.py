@@ -127,3 +127,13 @@ def test_lexicon_phrases_stop_at_punctuation_and_an_appositive_part_describes_th
     assert dict(analyse_query("Face the window. The door is on the left.").targets) == {"door": 1.0}
     info = analyse_query("floor lamp, red shade")
     assert info.named and ("color", "red") in info.attrs
+
+
+def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
+    info = analyse_query("Not the striped blue rug: the plain blue one in the hall.")
+    assert info.named and "rug" in info.targets                    # "one" is of the kind ruled out before
+    assert ("color", "blue") in info.attrs and ("color", "blue") not in info.excluded_attrs  # asked for, so kept
+    info = analyse_query("Not the lamp on the desk, the vase on the windowsill.")
+    assert "vase" in info.targets and "lamp" in info.excluded_targets and "lamp" not in info.targets
+    structure = parse_request("Not the lamp on the desk, the vase on the windowsill.")
+    assert structure.excluded == (0, len("Not the lamp on the desk, "))

@@ -177,3 +177,11 @@ def test_an_imperative_face_sets_the_viewpoint_a_noun_face_does_not():
     face = parse_query("Face the sofa. The lamp you want is on the right.")
     assert face.target == ("lamp",) and face.facing == ("sofa",)
     assert parse_query("the clock face by the door").facing == ()
+
+
+def test_a_leading_exclusion_negates_its_own_relations_only():
+    mug = parse_query("Not the one on the desk: the mug on the shelf.")
+    assert mug.target == ("cup",)
+    assert [(r.kind, r.landmarks, r.negated) for r in mug.relations] == [("on", [("desk",)], True), ("on", [("shelf",)], False)]
+    chair = parse_query("Not the red chair, the one by the window.")
+    assert [(r.kind, r.negated) for r in chair.relations] == [("near", False)]

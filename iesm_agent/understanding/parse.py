@@ -84,6 +84,7 @@ class Structure:
     request: tuple[int, int]
     context: tuple[tuple[int, int], ...]
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
+    excluded: tuple[int, int] | None = None  # a leading "Not the red one:" that rules out, as a character range
 
     def modified_noun(self, offset: int) -> int | None:
         """Index of the noun that the word at character `offset` modifies (as an adjective,
@@ -133,9 +134,27 @@ def normalise(text: str) -> str:
     return text
 
 
+#: a leading clause that rules out before the request ("Not the red one: the blue mug"), to its punctuation
+_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
+
+
 @lru_cache(maxsize=4096)
 def parse_request(text: str) -> Structure:
-    """The structure of `text` (a request of one or more sentences)."""
+    """The structure of `text` (a request of one or more sentences); a leading clause that only
+    rules out ("Not the one on the desk: the mug on the table") is left out of the parse and
+    marked `excluded`."""
+    fronted = _FRONTED_EXCLUSION.match(text)
+    if fronted is None or not any(c.isalpha() for c in text[fronted.end():]):
+        return _parse_sentences(text)
+    at = fronted.end()
+    rest = _parse_sentences(text[at:])
+    return Structure(tuple(Word(w.text, w.start + at, w.head, w.dep, w.pos) for w in rest.words), rest.target,
+                     rest.phrase, (rest.request[0] + at, rest.request[1] + at),
+                     tuple((a + at, b + at) for a, b in rest.context), rest.leaving, (0, at))
+
+
+def _parse_sentences(text: str) -> Structure:
+    """The structure of `text` as parsed, every sentence of it."""
     doc = _pipeline()(text)
     words = tuple(Word(t.text, t.idx, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)

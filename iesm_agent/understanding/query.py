@@ -239,7 +239,7 @@ class _Reading:
     lemmas: list[str]
     spans: list[Span]
     preamble: list[str]
-    ruled_out: "QueryInfo | None"
+    ruled_out: list["QueryInfo"]
 
 
 def _read_request(lex: Lexicon, text: str) -> _Reading:
@@ -250,9 +250,11 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     structure = parse_request(corrected)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
-    ruled_out = None
+    ruled_out = []
+    if structure.excluded is not None:  # "Not the red one: ..."
+        ruled_out.append(analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:])))
     if marker is not None:
-        ruled_out = analyse_query(" ".join(tokens[marker[1]:]))
+        ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
         tokens = tokens[:marker[0]]
     request, preamble = _split_preamble(lex, tokens)
     if structure.target is None or structure.words[structure.target].start >= getattr(request[0], "at", 0):
@@ -287,9 +289,9 @@ def analyse_query(text: str) -> QueryInfo:
     lex = load_lexicon()
     reading = _read_request(lex, text)
     info = _draft(text)
-    if reading.ruled_out is not None:
-        info.excluded_targets = frozenset(reading.ruled_out.targets)
-        info.excluded_attrs = frozenset(reading.ruled_out.attrs)
+    for ruled_out in reading.ruled_out:
+        info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets)
+        info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
     target = _locate_target(lex, reading, clause)
@@ -316,7 +318,14 @@ def analyse_query(text: str) -> QueryInfo:
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
+    fronted = reading.ruled_out[0] if reading.structure.excluded is not None else None
+    if not _named(info) and fronted is not None and fronted.named and not info.afford:
+        # "Not the big grey couch, the small leather one": one of the kind the exclusion named
+        info.targets.update({c: 1.0 for c, w in fronted.targets.items() if w >= 1.0})
+        info.target_phrase = info.target_phrase or fronted.target_phrase
     _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
+    info.excluded_targets -= {c for c, w in info.targets.items() if w >= 1.0}  # "not the plain orange one:
+    info.excluded_attrs -= set(info.attrs)                                     # the striped orange pillow"
     return QueryInfo(**vars(info))
 
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from ..lexicon import load_lexicon
 from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
-from .parse import normalise, parse_request
+from .parse import Word, normalise, parse_request
 from .query import analyse_query
 from .text import clause_breaks, lemmatise
 
@@ -117,6 +117,11 @@ class _Reader:
         self.target_at = self.parsed_target()
         if self.target_at is not None:
             self.used.add(self.target_at)
+
+    def word(self, i: int) -> Word:
+        """The parsed word of token `i` (a blank one for a token outside the parse)."""
+        k = self.words[i]
+        return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
 
     def span_at(self, word: int | None) -> int | None:
         """Start of the category span that holds the parsed `word`, or None."""
@@ -237,6 +242,8 @@ class _Reader:
         i, negated = 0, set()  # indices of relations that follow a negation word
         toks, out = self.toks, self.out
         while i < len(self.lemmas):
+            if i and self.words[i - 1] is None and self.words[i] is not None:  # past "Not the red one:"
+                negated = {k for k in negated if k < len(out.relations)}
             if toks[i] in _NEGATIONS:
                 negated.add(len(out.relations))
                 i += 1
@@ -265,9 +272,9 @@ class _Reader:
             return i + 1
         words, kind = cue
         self.cue_word = self.words[i + len(words) - 1]
-        if self.structure.words[self.words[i]].dep == "prt":
+        if self.word(i).dep == "prt":
             return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
-        if words == ("face",) and self.structure.words[self.words[i]].pos != "VERB":
+        if words == ("face",) and self.word(i).pos != "VERB":
             return i + 1  # "the clock face": a noun, not "face the window"
         if words == ("at",) and not self.beside(self.words[i]):
             return i + 1
@@ -318,8 +325,8 @@ class _Reader:
             self.landmark(rel, i)  # "the middle of the bed": relative to that object
             out.relations.append(rel)
             return i
-        if kind == "right" and nxt != "of" and i < len(toks) and self.structure.words[self.words[i]].pos == "ADP" \
-                and self.structure.words[self.cue_word].dep != "pobj":
+        if kind == "right" and nxt != "of" and i < len(toks) and self.word(i).pos == "ADP" \
+                and self.cue_word is not None and self.structure.words[self.cue_word].dep != "pobj":
             return i  # "right below the sink": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
@@ -412,7 +419,7 @@ class _Reader:
         toks, out, taken = self.toks, self.out, self.taken
         target = self.target_at
         if target is None:
-            target = next((j for j in sorted(self.cat_at) if j not in self.used), None)
+            target = next((j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         info = analyse_query(self.text)
