@@ -5,13 +5,12 @@ import json
 
 import pytest
 
-from iesm_agent.understanding.spatial import parse_query
-
 from iesm_agent.config import RetrievalConfig
 from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore
 from iesm_agent.store.importers.objects import import_objects
+from iesm_agent.understanding.spatial import parse_query
 
 
 def box(i, label, center, size, **extra):

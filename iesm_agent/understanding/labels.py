@@ -29,6 +29,7 @@ class Record:
     text: str                    # label and caption, for sentence embeddings
     slots: tuple[Slot, ...] = ()  # attributes as written in label, caption and tags
     stems: frozenset[str] = frozenset()  # word stems of label, caption and tags
+    room_words: frozenset[str] = frozenset()  # lemmas of the room's own name ("master bedroom 2")
 
 
 @lru_cache(maxsize=65536)
@@ -164,6 +165,8 @@ def _record(data: dict) -> Record:
         for c, w in label_concepts(_as_text(alt)):
             concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
     room = room_of(_as_text(data.get("room"))) if data.get("room") else None
+    lex = load_lexicon()
+    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha()) if room else frozenset()
     caption = _as_text(data.get("caption"))
     text_parts = [label, caption]
     tags = data.get("tags")
@@ -183,7 +186,8 @@ def _record(data: dict) -> Record:
             stems |= st
     return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
                   attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
-                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems))
+                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems),
+                  room_words=room_words)
 
 
 def _as_text(value) -> str:

@@ -100,6 +100,9 @@ _INNER_GATE_WEIGHT = 0.5
 #: every component counts this much on top of the focus evidence, so that ties left by the focus
 #: evidence are broken by the rest of the evidence before the id decides
 _TIE_BREAK = 0.02
+#: share of the room evidence left for a room of the asked-for type whose own name lacks words the
+#: request uses for it ("master bedroom" asked, "guest bedroom" on the map)
+_OTHER_NAMED_ROOM = 0.9
 #: what each role ranks by, in order; a later key only separates candidates the earlier ones tie
 _FIRST, _SECOND = 100.0, 10.0
 
@@ -317,11 +320,14 @@ def _components(lex, q: QueryInfo, r: Record, memo: dict) -> tuple[float, ...]:
         kin = max(kin, wc * sims[2])
     if label and q.head_words:  # the label literally says (part of) what the query says
         label += 0.05 * len(q.head_words & r.label_words) / len(q.head_words)
-    key = ("r", r.room)
+    key = ("r", r.room, r.room_words)
     room = memo.get(key)
     if room is None:
-        room = memo[key] = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items()
-                                if r.room is not None), default=0.0)
+        room = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items() if r.room is not None), default=0.0)
+        asked = frozenset(lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha())
+        if room and asked and not asked <= r.room_words:  # "the master bedroom": not the guest bedroom
+            room *= _OTHER_NAMED_ROOM
+        memo[key] = room
     desc = 0.0
     if q.slots:
         desc = sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
