@@ -167,6 +167,10 @@ def _relations(text: str) -> list[tuple[str, list[tuple[str, ...]], str]]:
     ("the stool at the far end of the counter", []),
     # any relation placing another thing on a re-mentioned target holds from the target's side
     ("this is a shelf. there is a vase on the shelf.", [("with", [("vase",)], "")]),
+    # the landmark is the noun the relation's words take as object, not a modifier before it
+    ("the cushion on a glass table", [("on", [("table",)], "")]),
+    ("the lamp on the nightstand farthest from the wardrobe", [("on", [("nightstand",)], ""),
+                                                               ("farthest", [("wardrobe",)], "")]),
 ])
 def test_relations_follow_the_parse(text, expected):
     assert _relations(text) == expected

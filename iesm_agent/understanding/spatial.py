@@ -42,6 +42,8 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
+#: parse relations of a word that heads a relation's object ("on a glass [table]")
+_PHRASE_HEADS = frozenset({"pobj", "dobj", "conj", "attr", "npadvmod"})
 #: relations that say nothing without a landmark
 _NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
@@ -221,9 +223,23 @@ class _Reader:
         return tuple(found)
 
     def next_cat(self, pos: int) -> int | None:
-        """Start of the first free category span from `pos` within what the current cue governs."""
-        return next((j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
-                     and self.in_cue_object(j)), None)
+        """Start of the first free category span from `pos` within what the current cue governs;
+        of those, the one that heads the cue's object ("on a glass [table]": not the glass)."""
+        found = [j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
+                 and self.in_cue_object(j)]
+        if len(found) > 1 and self.cue_object() is not None:
+            objects = self.cue_objects()
+            found = [j for j in found if objects & set(self.words[self.cat_at[j].start:self.cat_at[j].end])] + found
+        return found[0] if found else None
+
+    def cue_objects(self) -> set[int]:
+        """Parsed words that are the current cue's own objects: its noun objects, those of its
+        prepositions ("closest [to] the door", "the right side [of] the table") and their conjuncts."""
+        st = self.structure
+        owners = {self.cue_word, self.cue_noun()}
+        owners |= {k for k, w in enumerate(st.words) if w.head in owners and w.dep == "prep" and k not in owners}
+        objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
+        return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
 
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`."""
