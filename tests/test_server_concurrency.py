@@ -94,7 +94,7 @@ def test_a_query_reaches_the_pool_as_one_job_and_queries_never_share_one(apartme
 
 
 def test_a_failing_call_fails_alone_within_its_job():
-    """Each caller of a job gets its own completion or exception; a failed job fails every call."""
+    """Each caller of a job gets its own completion, exception or timeout; a failed job fails every call."""
     from iesm_agent.providers.base import Completion, Message, Model
     from iesm_agent.server.workers import WorkerPool
 
@@ -102,19 +102,24 @@ def test_a_failing_call_fails_alone_within_its_job():
         async def acomplete(self, messages, options=None):
             if "bad" in messages[0].text():
                 raise ValueError("refused")
+            if "slow" in messages[0].text():
+                await asyncio.sleep(0.3)
             return Completion(text=messages[0].text().upper(), model="picky")
 
     pool = WorkerPool(2)
     model = OffLoopModel(Picky(), pool)
 
+    def ask(text: str, timeout: float = 10.0):
+        return asyncio.wait_for(model.acomplete([Message(role="user", content=text)]), timeout)
+
     async def run():
-        texts = ["good one", "bad one", "good two"]
-        return await asyncio.gather(*(model.acomplete([Message(role="user", content=t)]) for t in texts),
+        return await asyncio.gather(ask("good one"), ask("bad one"), ask("slow one", timeout=0.05), ask("good two"),
                                     return_exceptions=True)
 
-    good, bad, good_two = asyncio.run(run())
+    good, bad, late, good_two = asyncio.run(run())
     assert good.text == "GOOD ONE" and good_two.text == "GOOD TWO"
     assert isinstance(bad, ValueError) and str(bad) == "refused"
+    assert isinstance(late, TimeoutError)  # its deadline passed; the job's later answer is dropped
     pool.shutdown()
 
     async def after_shutdown():

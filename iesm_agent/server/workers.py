@@ -120,8 +120,10 @@ def _settle(batch: list[_Call], job: asyncio.Task) -> None:
     for call, outcome in zip(batch, outcomes):
         if call.future.done():
             continue
-        if failed:
-            call.future.set_exception(asyncio.CancelledError() if job.cancelled() else job.exception())
+        if job.cancelled():
+            call.future.cancel()
+        elif failed:
+            call.future.set_exception(job.exception())
         elif isinstance(outcome, BaseException):
             call.future.set_exception(outcome)
         else:
