@@ -341,7 +341,8 @@ def load_json(data: str | bytes | Path, source: str | Path | None = None, where:
     raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else bytes(data)
     if len(raw) > max_bytes:
         raise error(f"JSON of {len(raw):,} bytes is more than the {max_bytes:,} allowed", source, where)
-    depth = json_depth(raw)
+    # nesting cannot exceed the number of opening brackets: short replies skip the scan
+    depth = json_depth(raw) if raw.count(b"[") + raw.count(b"{") > max_depth else 0
     if depth > max_depth:
         raise error(f"JSON nested {depth} levels deep, more than the {max_depth} allowed", source, where)
     try:

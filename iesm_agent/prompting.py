@@ -77,6 +77,9 @@ class PromptLibrary:
             lstrip_blocks=True,
             keep_trailing_newline=False,
             autoescape=False,
+            # a template is read once per library, like its hash in the trace (`source_hash`,
+            # memoised per retriever) and `has`: no file stat per render
+            auto_reload=False,
         )
         self._env.filters["fence"] = fence
         self._env.filters["fence_lines"] = fence_lines

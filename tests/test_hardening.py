@@ -89,6 +89,31 @@ def test_deep_iesm_manifest(tmp_path, capsys, apartment_path):
     assert "nested" in error_line(["info", bad], capsys)
 
 
+def test_the_depth_bound_is_exact_with_or_without_the_full_scan():
+    """load_json skips the bracket scan when the text has no more opening brackets than the bound
+    allows: the refusal starts exactly one level past the bound, and brackets inside strings (which
+    make the count exceed the bound) still do not count."""
+    from iesm_agent.fileio import json_depth, load_json
+
+    bound = 8
+    assert load_json("[" * bound + "]" * bound, max_depth=bound) is not None
+    with pytest.raises(IesmError, match="nested 9 levels deep"):
+        load_json("[" * (bound + 1) + "]" * (bound + 1), max_depth=bound)
+    in_strings = json.dumps({"a": ["[{" * 20, {"b": "{" * 30}]})
+    assert load_json(in_strings, max_depth=3) == json.loads(in_strings)
+    with pytest.raises(IesmError, match="nested 4 levels deep"):
+        load_json(json.dumps([[[["[" * 20]]]]), max_depth=3)  # 4 lists; 24 brackets counted
+    rng = np.random.default_rng(0)
+    for _ in range(500):  # random bracket soups: refused for depth exactly when the full scan says so
+        text = "".join(rng.choice(list('[]{}"x,'), size=int(rng.integers(1, 30))))
+        try:
+            load_json(text, max_depth=4)
+        except IesmError as exc:
+            assert ("levels deep" in str(exc)) == (json_depth(text.encode()) > 4), (text, str(exc))
+        else:
+            assert json_depth(text.encode()) <= 4, text
+
+
 def test_deep_sim_faults(tmp_path, capsys):
     (tmp_path / "f.json").write_text("{\"miss_rate\": " + "[" * DEEP)
     assert "nested" in error_line(["sim", "--out", tmp_path / "s", "--faults", tmp_path / "f.json"], capsys)

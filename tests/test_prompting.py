@@ -27,3 +27,24 @@ def test_expert_prompt_fences_the_query_and_every_candidate():
     block = user.split("<candidates>\n", 1)[1].split("\n</candidates>", 1)[0]
     assert [json.loads(line)["id"] for line in block.splitlines()] == [4, 9]
     assert user.count("</query>") == 1 and user.count("</candidates>") == 1
+
+
+def test_a_library_reads_each_template_once(tmp_path, monkeypatch):
+    """Rendering does not look at the template file again (no stat per render on the server's hot
+    path): a template edited after its first render keeps rendering as first read, which is the
+    version whose hash the retriever's traces carry."""
+    import os
+
+    (tmp_path / "probe.j2").write_text("{% block system %}first {{ x }}{% endblock %}")
+    lib = PromptLibrary([tmp_path])
+    assert lib.render("probe.j2", x=1)[0].content == "first 1"
+    stats = []
+    real_stat = os.stat
+    monkeypatch.setattr(os, "stat", lambda *a, **k: stats.append(a[0]) or real_stat(*a, **k))
+    (tmp_path / "probe.j2").write_text("{% block system %}second {{ x }}{% endblock %}")
+    assert lib.render("probe.j2", x=2)[0].content == "first 2"
+    assert lib.render("expert.j2", query="q", focus="f", hint="", expert="obj", expert_title="Object",
+                      candidates=FencedList([]), kappa=3, references=[]) is not None
+    monkeypatch.undo()
+    assert not [s for s in stats if str(s).endswith("probe.j2")]
+    assert PromptLibrary([tmp_path]).render("probe.j2", x=3)[0].content == "second 3"

@@ -63,6 +63,72 @@ def test_local_model_calls_run_on_the_bounded_pool(apartment_store, monkeypatch)
     assert len({r["instance_id"] for r in serial}) >= 6
 
 
+def test_a_query_reaches_the_pool_as_one_job_and_queries_never_share_one(apartment_store, monkeypatch):
+    monkeypatch.setenv("IESM_EMBEDDINGS", "0")
+    service = MapService({"apartment": apartment_store}, workers=2)
+    jobs: list[tuple[str, int]] = []  # (worker thread, calls in the job)
+    complete_all = OffLoopModel._complete_all
+
+    async def recording(self, requests):
+        jobs.append((threading.current_thread().name, len(requests)))
+        return await complete_all(self, requests)
+
+    monkeypatch.setattr(OffLoopModel, "_complete_all", recording)
+    queries = suite_queries(8)
+
+    async def run():
+        try:
+            serial = [await service.find_goal(q) for q in queries]
+            n_serial = len(jobs)
+            concurrent = await asyncio.gather(*(service.find_goal(q) for q in queries))
+            return serial, n_serial, concurrent
+        finally:
+            await service.aclose()
+
+    serial, n_serial, concurrent = asyncio.run(run())
+    assert n_serial == len(queries) and len(jobs) == 2 * len(queries)  # one job per query, serial or not
+    sizes = {size for _, size in jobs}
+    assert len(sizes) == 1 and sizes.pop() > 1  # the gate and the experts of one query, never two queries'
+    assert all(name.startswith("iesm-worker") for name, _ in jobs)
+    assert [_without_timing(r) for r in concurrent] == [_without_timing(r) for r in serial]
+
+
+def test_a_failing_call_fails_alone_within_its_job():
+    """Each caller of a job gets its own completion, exception or timeout; a failed job fails every call."""
+    from iesm_agent.providers.base import Completion, Message, Model
+    from iesm_agent.server.workers import WorkerPool
+
+    class Picky(Model):
+        async def acomplete(self, messages, options=None):
+            if "bad" in messages[0].text():
+                raise ValueError("refused")
+            if "slow" in messages[0].text():
+                await asyncio.sleep(0.3)
+            return Completion(text=messages[0].text().upper(), model="picky")
+
+    pool = WorkerPool(2)
+    model = OffLoopModel(Picky(), pool)
+
+    def ask(text: str, timeout: float = 10.0):
+        return asyncio.wait_for(model.acomplete([Message(role="user", content=text)]), timeout)
+
+    async def run():
+        return await asyncio.gather(ask("good one"), ask("bad one"), ask("slow one", timeout=0.05), ask("good two"),
+                                    return_exceptions=True)
+
+    good, bad, late, good_two = asyncio.run(run())
+    assert good.text == "GOOD ONE" and good_two.text == "GOOD TWO"
+    assert isinstance(bad, ValueError) and str(bad) == "refused"
+    assert isinstance(late, TimeoutError)  # its deadline passed; the job's later answer is dropped
+    pool.shutdown()
+
+    async def after_shutdown():
+        return await asyncio.gather(model.acomplete([Message(role="user", content="x")]), return_exceptions=True)
+
+    (closed,) = asyncio.run(after_shutdown())
+    assert isinstance(closed, RuntimeError)  # the pool refuses new work: the call fails, it does not hang
+
+
 @pytest.mark.slow
 def test_concurrent_calls_with_the_encoder_match_serial_ones(apartment_store, monkeypatch):
     """(o,d) and unknown-word queries embed text on several worker threads at once."""

@@ -95,3 +95,31 @@ def test_cli_serves_http_and_reads_the_token_from_the_environment():
         proc.send_signal(signal.SIGINT)
         code = proc.wait(timeout=20)
     assert code == 0 and proc.stdout.read() == ""
+
+
+def test_the_start_up_heap_is_frozen_after_warm_up_before_serving(apartment_store, monkeypatch):
+    """The cyclic collector's full passes do not walk what start-up built: `serve_http` freezes
+    the heap after the warm-up query and before the first request."""
+    import gc
+
+    from iesm_agent.server import app
+
+    events: list[str] = []
+    service = MapService({"apartment": apartment_store})
+    warm_up = service.warm_up
+
+    async def recorded_warm_up():
+        await warm_up()
+        events.append("warm-up")
+
+    class NoServer:
+        async def serve(self, sockets):
+            events.append(f"serve (frozen objects: {gc.get_freeze_count() > 0})")
+
+    monkeypatch.setattr(service, "warm_up", recorded_warm_up)
+    monkeypatch.setattr(app, "uvicorn_server", lambda _app: NoServer())
+    try:
+        asyncio.run(app.serve_http(service, "127.0.0.1", 0, None))
+    finally:
+        gc.unfreeze()  # the test process's heap back to normal
+    assert events == ["warm-up", "serve (frozen objects: True)"]

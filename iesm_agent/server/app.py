@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import gc
 import hmac
 import json
 import logging
@@ -246,11 +247,21 @@ def parse_listen(spec: str) -> tuple[str, int]:
     return host, int(port)
 
 
+def freeze_start_up_heap() -> None:
+    """Collect, then move everything start-up built (maps, parser, encoder, warm caches: about
+    250,000 objects) out of the cyclic garbage collector's sight (`gc.freeze`): its full passes,
+    about 100 ms of CPU each with them, come every few hundred queries and land on one burst of
+    calls. Frozen objects are still freed by reference counting."""
+    gc.collect()
+    gc.freeze()
+
+
 async def serve_stdio(service: MapService) -> None:
     """Warm the service up, then speak MCP on stdin/stdout until stdin closes."""
     quiet_sdk_logging()
     with contextlib.redirect_stdout(sys.stderr):  # nothing but protocol on stdout
         await service.warm_up()
+    freeze_start_up_heap()
     try:
         await build_server(service).run_stdio_async()
     finally:
@@ -264,6 +275,7 @@ async def serve_http(service: MapService, host: str, port: int, token: str | Non
     sock = bind(host, port)
     await service.warm_up()
     server = uvicorn_server(http_app(build_server(service, token), host, sock.getsockname()[1], extra_hosts))
+    freeze_start_up_heap()
     bound = sock.getsockname()
     shown = f"[{bound[0]}]" if ":" in bound[0] else bound[0]
     print(f"iesm serve: MCP on http://{shown}:{bound[1]}{MCP_PATH} ({', '.join(service.maps)}; "

@@ -32,7 +32,7 @@ from ..store import mapstore as mapstore_module
 from ..store.model import Id, Metres
 from ..store.tools import function_schema
 from .results import FindGoalResult, Ranked, argument_problem, place
-from .workers import OffLoopModel, WorkerPool
+from .workers import OffLoopModel, WorkerPool, new_query
 
 #: longest query (or other text argument) a tool accepts, in characters
 #: the longest text argument a map tool accepts, in characters
@@ -177,6 +177,7 @@ class MapService:
         retriever = self.retriever(map, method, provider)
         if isinstance(retriever.model, OffLoopModel):
             async with self._admission():  # first come, first served on the worker pool
+                new_query()  # this query's model calls go to the pool as one job
                 res = await retriever.aask(query)
         else:
             res = await retriever.aask(query)

@@ -1,0 +1,129 @@
+"""Where the CPU of one `find_goal` goes, in-process (no HTTP): the parts of MTEFR with the offline
+model, measured with per-thread CPU time around each part, on the queries `bench_server.py` sends
+in its bursts (first time in the process, then repeated), and the server's own share
+(`MapService.find_goal` on its worker pool, all threads, minus the retrieval alone).
+
+Also measured: the English parser one sentence at a time (as a query is read today) against
+`nlp.pipe` over the same sentences in batches of 40 (what a burst could cost if its queries
+were parsed together).
+
+Run from the repository root: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/find_goal_cpu.py
+(not part of `make bench`: it reports shares, no target).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import collections
+import functools
+import statistics
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent))
+from bench_server import queries  # noqa: E402
+
+from iesm_agent.providers.offline import OfflineModel  # noqa: E402
+from iesm_agent.retrieval import calls, mtefr, retriever  # noqa: E402
+from iesm_agent.retrieval.retriever import Retriever  # noqa: E402
+from iesm_agent.server import MapService  # noqa: E402
+from iesm_agent.store import MapStore, open_map  # noqa: E402
+from iesm_agent.understanding import parse, query  # noqa: E402
+
+#: (label, owner, attribute): the parts timed, each with the thread's CPU clock
+PARTS = (("English parser (spaCy)", query, "parse_request"),
+         ("query analysis, parser included", retriever, "analyse_query"),
+         ("offline model answers", OfflineModel, "answer"),
+         ("prompt rendering (Jinja)", calls.Session, "render"),
+         ("prompt hashes for the trace", calls, "prompt_sha256"),
+         ("expert replies read", calls.Session, "ranking"),
+         ("gate reply read", mtefr, "_gate_weights"),
+         ("fusion", mtefr, "fuse"),
+         ("result assembled", Retriever, "_result"))
+
+
+def timed_parts() -> tuple[collections.Counter, list]:
+    """Wrap each of `PARTS` with a CPU-time counter: the counter (seconds per label) and the
+    (owner, name, original) to put back."""
+    spent: collections.Counter = collections.Counter()
+    originals = [(owner, name, getattr(owner, name)) for _, owner, name in PARTS]
+    for label, owner, name in PARTS:
+        fn = getattr(owner, name)
+
+        @functools.wraps(fn)
+        def timed(*args, _fn=fn, _label=label, **kwargs):
+            t0 = time.thread_time()
+            try:
+                return _fn(*args, **kwargs)
+            finally:
+                spent[_label] += time.thread_time() - t0
+        setattr(owner, name, timed)
+    return spent, originals
+
+
+async def retrieval_alone(store, asked: list[str]) -> tuple[float, float, collections.Counter]:
+    """CPU ms per query of `Retriever.aask` in one thread (model inline): first time, repeated;
+    the parts' ms per query (first time)."""
+    r = Retriever(store, provider="offline", method="mtefr")
+    await r.aask("a cosy blue wooden seat for reading near the window in the living room")  # loads everything
+    spent, originals = timed_parts()
+    t0 = time.process_time()
+    for q in asked:
+        await r.aask(q)
+    first = (time.process_time() - t0) * 1000 / len(asked)
+    parts = collections.Counter({k: v * 1000 / len(asked) for k, v in spent.items()})
+    for owner, name, fn in originals:
+        setattr(owner, name, fn)
+    t0 = time.process_time()
+    for q in asked:
+        await r.aask(q)
+    return first, (time.process_time() - t0) * 1000 / len(asked), parts
+
+
+async def served(asked: list[str], rounds: int = 3) -> float:
+    """CPU ms per repeated query of `MapService.find_goal` (worker pool, all threads), median of rounds."""
+    service = MapService.open(["apartment"])
+    await service.warm_up()
+    for q in asked:
+        await service.find_goal(q)
+    per_round = []
+    for _ in range(rounds):
+        t0 = time.process_time()
+        for q in asked:
+            await service.find_goal(q)
+        per_round.append((time.process_time() - t0) * 1000 / len(asked))
+    await service.aclose()
+    return statistics.median(per_round)
+
+
+def parser_batches(texts: list[str]) -> tuple[float, float]:
+    """CPU ms per sentence of the parser one at a time and in `nlp.pipe` batches of 40."""
+    nlp = parse._pipeline()
+    t0 = time.process_time()
+    for text in texts:
+        nlp(text)
+    one = (time.process_time() - t0) * 1000 / len(texts)
+    t0 = time.process_time()
+    list(nlp.pipe(texts, batch_size=40))
+    return one, (time.process_time() - t0) * 1000 / len(texts)
+
+
+def main() -> None:
+    pool = queries()
+    asked = pool[40:160]  # bench_server's burst queries
+    first, again, parts = asyncio.run(retrieval_alone(MapStore(open_map("apartment")), asked))
+    repeated = asyncio.run(served(asked))
+    one, batched = parser_batches([parse.normalise(q) for q in pool])
+    print(f"{len(asked)} queries (bench_server's bursts), CPU ms per query, one thread, no HTTP:")
+    print(f"  retrieval (Retriever.aask, model inline): first time {first:.2f}, repeated {again:.2f}")
+    for label, ms in parts.most_common():
+        print(f"    {label:<36} {ms:6.2f}")
+    print(f"  MapService.find_goal on its worker pool, repeated queries, all threads: {repeated:.2f} "
+          f"(server's own share over the retrieval: {repeated - again:+.2f})")
+    print(f"  English parser: one sentence at a time {one:.2f} ms, nlp.pipe in batches of 40 {batched:.2f} ms "
+          f"({len(pool)} suite queries)")
+
+
+if __name__ == "__main__":
+    main()
