@@ -288,7 +288,8 @@ class _Reader:
             return i + 1
         words, kind = cue
         self.cue_word = self.words[i + len(words) - 1]
-        if self.word(i).dep == "prt":
+        stranded = kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals)
+        if self.word(i).dep == "prt" and not stranded:
             return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
         if words == ("face",) and self.word(i).pos != "VERB":
             return i + 1  # "the clock face": a noun, not "face the window"
@@ -296,7 +297,7 @@ class _Reader:
             return i + 1
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
-        if kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals) and self.inverse(i, kind):
+        if stranded and self.inverse(i, kind):
             return i + len(words)
         return self.relation(i + len(words), words, kind)
 
