@@ -63,6 +63,8 @@ class MappingConfig(BaseModel):
     mask_erode_px: int = Field(1, ge=0)
     depth_edge_jump: Optional[float] = Field(None, gt=0)
     min_cell_points: int = Field(3, ge=1)
+    depth_smooth_px: int = Field(0, ge=0)
+    depth_smooth_disparity: float = Field(0.01, gt=0)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -73,7 +75,8 @@ class MappingConfig(BaseModel):
     @classmethod
     def uncleaned(cls, **values: Any) -> "MappingConfig":
         """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
-        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, **values})
+        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
+                      **values})
 
 
 class RetrievalConfig(BaseModel):
