@@ -1,6 +1,10 @@
 """Geometry cleaning before projection (not in the paper; `MappingConfig.paper()` turns it off):
 what the field does with noisy depth and masks whose border strays onto the surface behind.
 
+* `smooth_depth`: an edge-preserving bilateral filter of the depth image on disparity (as
+  KinectFusion smooths raw depth before fusing it): a surface seen at 3 m with per-pixel noise of a
+  few centimetres otherwise lands in two or three top-down cells across, so a wall, a door or a
+  picture, one cell thick, gets a footprint three times too large;
 * `depth_edges`: pixels next to a relative depth jump, the readings a depth sensor smears across a
   discontinuity ("flying pixels") and where a mask border most often lies on the wrong side;
 * `clean_masks`: each mask eroded by a few pixels (its border, where segmenters leak), then its
