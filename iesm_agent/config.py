@@ -38,9 +38,7 @@ class MappingConfig(BaseModel):
     bilateral filter applied to each frame's depth as disparity (1 / depth, where a structured-light
     sensor's noise is even) before anything else, with range sigma `depth_smooth_disparity` (1/m):
     depth noise spreads a surface across cells along the viewing ray, the largest cause of
-    footprints too large to match (docs/results.md, issue 29); `min_cell_share` (0 = off): after the
-    first pass each instance drops the cells holding fewer than this share of its median points per
-    cell, summed over the views fused into it (`InstanceDictionary.drop_thin_cells`)."""
+    footprints too large to match (docs/results.md, issue 29)."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -72,11 +70,6 @@ class MappingConfig(BaseModel):
     min_cell_points: int = Field(1, ge=1)
     depth_smooth_px: int = Field(7, ge=0)
     depth_smooth_disparity: float = Field(0.01, gt=0)
-    # per-instance cell support, after the first pass (issue 29, tuning seeds 0-4, matched per scene
-    # realistic / easy): off 57.6 / 59.2; a share of the instance's median points per cell of 0.05 /
-    # 0.1 / 0.15 / 0.2: 58.2 / 58.8 (easy 59.4) / 59.0 / 58.8 (easy 58.6); applied after the
-    # continuity merge instead of before the second pass: 0.1 58.4, 0.2 58.6
-    min_cell_share: float = Field(0.1, ge=0, lt=1)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -88,7 +81,6 @@ class MappingConfig(BaseModel):
     def uncleaned(cls, **values: Any) -> "MappingConfig":
         """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "min_cell_share": 0.0,
                       **values})
 
 

@@ -66,8 +66,8 @@ def test_min_cell_points_drops_thinly_supported_cells_and_empty_candidates():
 def test_paper_and_uncleaned_turn_cleaning_off():
     for cfg in (MappingConfig.paper(), MappingConfig.uncleaned()):
         assert cfg.mask_erode_px == 0 and cfg.depth_edge_jump is None
-        assert cfg.min_cell_points == 1 and cfg.depth_smooth_px == 0 and cfg.min_cell_share == 0
-    assert MappingConfig().depth_smooth_px > 0 and MappingConfig().min_cell_share > 0
+        assert cfg.min_cell_points == 1 and cfg.depth_smooth_px == 0
+    assert MappingConfig().depth_smooth_px > 0
     assert MappingConfig.paper().delta_geo_strong is None
 
 

@@ -60,33 +60,11 @@ def test_both_thresholds_must_pass_and_the_largest_phi_wins():
     assert select_matches(np.array([0]), np.array([0]), np.array([0.4]), np.array([0.9]), 1, CFG).tolist() == [-1]
 
 
-def test_union_keeps_the_higher_top_and_adds_the_points_per_cell():
-    keys, top, points = union_max(row_keys(0, [1, 2]), np.array([0.5, 0.7], np.float32), np.array([4, 5]),
-                                  row_keys(0, [2, 3]), np.array([0.9, 0.1], np.float32), np.array([6, 1]))
+def test_union_keeps_the_higher_top_per_cell():
+    keys, top = union_max(row_keys(0, [1, 2]), np.array([0.5, 0.7], np.float32),
+                          row_keys(0, [2, 3]), np.array([0.9, 0.1], np.float32))
     assert keys.tolist() == row_keys(0, [1, 2, 3]).tolist()
     assert top.tolist() == pytest.approx([0.5, 0.9, 0.1])
-    assert points.tolist() == [4, 11, 1]
-
-
-def test_thin_cells_leave_an_instance_after_its_views_are_summed():
-    """A wall's plane holds hundreds of points per cell over its views; the cells beside it that
-    depth noise reached hold a few. Those under `min_share` x the median leave the footprint (and
-    its bounding box); share 0 keeps every cell; an instance of even support keeps all."""
-    d = InstanceDictionary(2, MappingConfig())
-    f = np.array([[1.0, 0.0]])
-    plane, beside = row_keys(0, range(10)), row_keys(1, range(3))
-    for frame in range(3):
-        keys = np.concatenate([plane, beside])
-        cand = TopDownCandidates(mask_index=np.array([0]), offsets=np.array([0, 13]), keys=keys,
-                                 top=np.ones(13, np.float32), mean_height=np.array([1.0]), area_px=np.array([900]),
-                                 bbox=np.array([[0, 1, 0, 9]]), points=np.r_[np.full(10, 80), [2, 3, 1]])
-        d.integrate(cand, f, np.array([1.0]), frame)
-    assert len(d) == 1 and d.points[0].tolist() == [240] * 10 + [6, 9, 3]
-    assert d.drop_thin_cells(0.0) == 0 and len(d.keys[0]) == 13
-    assert d.drop_thin_cells(0.1) == 3
-    assert d.keys[0].tolist() == plane.tolist() and d.sizes[0] == 10
-    assert d.tops[0].tolist() == [1.0] * 10 and d._bbox[0].tolist() == [0, 0, 0, 9]
-    assert d.drop_thin_cells(0.1) == 0
 
 
 def _one(keys: np.ndarray, top: float, height: float, area: int) -> TopDownCandidates:

@@ -55,13 +55,12 @@ class MapBuilder:
 
         d = self.dictionary or InstanceDictionary(category_embeddings.shape[1], self.cfg)
         before, merges = len(d), 0
-        thin = d.drop_thin_cells(self.cfg.min_cell_share)
         if second_pass:
             d, merges = d.second_pass()
         d, continuous = d.merge_continuous()
         meta = {"frames": str(self.n_frames), "second_pass": str(second_pass).lower(),
                 "instances_first_pass": str(before), "second_pass_merges": str(merges),
-                "continuity_merges": str(continuous), "thin_cells_dropped": str(thin)}
+                "continuity_merges": str(continuous)}
         return to_scene_map(d, categories, category_embeddings, cell_size=self.cfg.cell_size, scene_id=scene_id,
                             embedding_space=embedding_space, meta=meta)
 

@@ -52,19 +52,15 @@ def group_ids(values: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray, np
     return distinct, inverse.reshape(-1), counts
 
 
-def union_max(keys_a: np.ndarray, top_a: np.ndarray, points_a: np.ndarray, keys_b: np.ndarray, top_b: np.ndarray,
-              points_b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Mask OR of two sparse masks with per-cell top heights (m) and point counts: a cell in both
-    keeps the larger top and the sum of the points. Returns (keys, top, points)."""
+def union_max(keys_a: np.ndarray, top_a: np.ndarray, keys_b: np.ndarray,
+              top_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Mask OR of two sparse masks; a cell in both keeps the larger top height (m)."""
     keys = np.concatenate([keys_a, keys_b])
     tops = np.concatenate([top_a, top_b])
-    points = np.concatenate([points_a, points_b])
     order = np.argsort(keys, kind="stable")
-    keys, tops, points = keys[order], tops[order], points[order]
-    if not len(keys):
-        return keys, tops, points
+    keys, tops = keys[order], tops[order]
     starts = run_starts(keys)
-    return keys[starts], np.maximum.reduceat(tops, starts), np.add.reduceat(points, starts)
+    return keys[starts], np.maximum.reduceat(tops, starts) if len(keys) else tops
 
 
 def intersections(keys_a: np.ndarray, owner_a: np.ndarray, keys_b: np.ndarray,

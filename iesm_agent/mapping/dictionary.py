@@ -2,14 +2,13 @@
 association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion") and the
 continuity merge of touching stretches of one object (not in the paper, `merge_continuous`).
 
-Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height
-and the per-cell number of points fused into it (summed over its observations),
+Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
 the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
 the same way), the weight w (number of fused observations) and its observations
 (frame index, mask index, mask area in pixels, mask score).
 
 Fusion of an entry with weight w and an observation of weight v (1 for a frame's candidate):
-mask OR (per-cell top = max, points summed), f <- (w f + v f_c) / (w + v), h likewise, w <- w + v. With v = 1
+mask OR (per-cell top = max), f <- (w f + v f_c) / (w + v), h likewise, w <- w + v. With v = 1
 these are the paper's equations; the second pass fuses whole entries with v = their weight.
 """
 
@@ -19,7 +18,7 @@ import numpy as np
 
 from ..config import MappingConfig
 from .association import continuous_link, phi_geo, phi_sem, select_matches
-from .cells import dilate, intersections, rowcol_of, union_max
+from .cells import dilate, intersections, union_max
 from .project import TopDownCandidates
 
 _EMPTY = np.zeros(0, np.int64)
@@ -32,7 +31,6 @@ class InstanceDictionary:
         self.cfg = cfg
         self.keys: list[np.ndarray] = []          # per entry: sorted cell keys
         self.tops: list[np.ndarray] = []          # per entry: top height (m) of each cell
-        self.points: list[np.ndarray] = []        # per entry: points fused into each cell
         self.observations: list[list[tuple[int, int, int, float]]] = []
         self._f = np.zeros((16, dim))             # embeddings
         self._w = np.zeros(16)                    # weights
@@ -59,7 +57,7 @@ class InstanceDictionary:
     def sizes(self) -> np.ndarray:
         return self._size[:len(self)]
 
-    def add(self, keys: np.ndarray, top: np.ndarray, points: np.ndarray, f: np.ndarray, height: float, weight: float,
+    def add(self, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
             bbox: np.ndarray, observations: list) -> int:
         """Append a new entry; returns its index."""
         n = len(self)
@@ -70,17 +68,15 @@ class InstanceDictionary:
             self._bbox = np.resize(self._bbox, (grow, 4))
         self.keys.append(keys)
         self.tops.append(top)
-        self.points.append(points)
         self.observations.append(list(observations))
         self._f[n], self._w[n], self._h[n], self._size[n], self._bbox[n] = f, weight, height, len(keys), bbox
         return n
 
-    def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, points: np.ndarray, f: np.ndarray, height: float,
-             weight: float, bbox: np.ndarray, observations: list) -> None:
+    def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
+             bbox: np.ndarray, observations: list) -> None:
         """Fuse an observation (or a whole entry) of weight `weight` into entry `i`."""
         w = self._w[i]
-        self.keys[i], self.tops[i], self.points[i] = union_max(self.keys[i], self.tops[i], self.points[i], keys, top,
-                                                               points)
+        self.keys[i], self.tops[i] = union_max(self.keys[i], self.tops[i], keys, top)
         self._f[i] = (w * self._f[i] + weight * np.asarray(f)) / (w + weight)
         self._h[i] = (w * self._h[i] + weight * height) / (w + weight)
         self._w[i] = w + weight
@@ -122,10 +118,10 @@ class InstanceDictionary:
         match = select_matches(a, e, geo, sem, len(cands), self.cfg)
         target = np.empty(len(cands), np.int64)
         for c in range(len(cands)):
-            keys, top, points = cands.cells(c)
+            keys, top = cands.cells(c)
             obs = [(frame_index, int(cands.mask_index[c]), int(cands.area_px[c]),
                     float(scores[cands.mask_index[c]]))]
-            args = (keys, top, points, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
+            args = (keys, top, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
             if match[c] >= 0:
                 self.fuse(int(match[c]), *args)
                 target[c] = match[c]
@@ -141,7 +137,7 @@ class InstanceDictionary:
         merges = 0
         for i in np.argsort(-self.weights, kind="stable"):
             m = link(self, out, i)
-            args = (self.keys[i], self.tops[i], self.points[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
+            args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1
@@ -160,24 +156,6 @@ class InstanceDictionary:
             return int(select_matches(a, e, geo, sem, 1, self.cfg)[0])
 
         return self._regroup(link)
-
-    def drop_thin_cells(self, min_share: float) -> int:
-        """Leave out of each entry's footprint the cells holding fewer than `min_share` times the
-        entry's median points per cell (0: keep every cell), in place; returns the number of cells
-        dropped. What depth noise, a stray mask border or a single wayward view leave beside a
-        surface holds a few points where the surface itself holds hundreds, summed over views."""
-        dropped = 0
-        for i in range(len(self)):
-            points = self.points[i]
-            keep = points >= min_share * np.median(points) if len(points) else points.astype(bool)
-            if keep.all():
-                continue
-            dropped += int(np.count_nonzero(~keep))
-            self.keys[i], self.tops[i], self.points[i] = self.keys[i][keep], self.tops[i][keep], points[keep]
-            rows, cols = rowcol_of(self.keys[i])
-            self._size[i] = len(self.keys[i])
-            self._bbox[i] = (rows.min(), rows.max(), cols.min(), cols.max())
-        return dropped
 
     def merge_continuous(self) -> tuple["InstanceDictionary", int]:
         """Fuse entries whose top-down masks touch (`continuous_link`), repeated until nothing more

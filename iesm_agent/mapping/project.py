@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Optional
 
 import numpy as np
 
@@ -22,8 +21,7 @@ class TopDownCandidates:
 
     `mask_index` (A,) index of each candidate's mask in the frame's segmentation;
     `offsets` (A + 1,): candidate a owns `keys[offsets[a]:offsets[a + 1]]` (sorted cell keys, see
-    `cells`) and the matching `top` (per-cell highest point, m) and `points` (per-cell number of
-    the candidate's points; None = one each); `mean_height` (A,) m, the mean
+    `cells`) and the matching `top` (per-cell highest point, m); `mean_height` (A,) m, the mean
     over the candidate's cells of the per-cell mean point height; `area_px` (A,) mask pixels;
     `bbox` (A, 4) int64 global (row_min, row_max, col_min, col_max).
     """
@@ -35,16 +33,14 @@ class TopDownCandidates:
     mean_height: np.ndarray
     area_px: np.ndarray
     bbox: np.ndarray
-    points: Optional[np.ndarray] = None
 
     def __len__(self) -> int:
         return len(self.mask_index)
 
-    def cells(self, a: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(keys, top, points) of candidate `a`."""
+    def cells(self, a: int) -> tuple[np.ndarray, np.ndarray]:
+        """(keys, top) of candidate `a`."""
         s, e = self.offsets[a], self.offsets[a + 1]
-        points = self.points[s:e] if self.points is not None else np.ones(e - s, np.int64)
-        return self.keys[s:e], self.top[s:e], points
+        return self.keys[s:e], self.top[s:e]
 
     def owners(self) -> np.ndarray:
         """Candidate index of every entry of `keys`."""
@@ -234,5 +230,4 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
         bbox[:, 2] = np.minimum.reduceat(c, first)
         bbox[:, 3] = np.maximum.reduceat(c, first)
     return TopDownCandidates(mask_index=kept.astype(np.int64), offsets=offsets, keys=keys_of(r, c), top=top,
-                             mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox,
-                             points=n_pts[sel].astype(np.int64))
+                             mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox)
