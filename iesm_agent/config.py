@@ -33,9 +33,12 @@ class MappingConfig(BaseModel):
     Geometry cleaning before projection (`mapping.clean`; not in the paper, `paper()` and
     `uncleaned()` turn it off): `mask_erode_px` pixels eroded from each mask's border,
     `depth_edge_jump` (relative, None = off) pixels next to a larger depth jump dropped,
-    `min_cell_points` a candidate's top-down cells with fewer points dropped (an absolute count, set
-    for the simulator's 320 x 240 camera, fx 160; a camera of half that resolution puts one or two
-    points in a 5 cm cell at 2.5 m, and wants 1)."""
+    `min_cell_points` a candidate's top-down cells with fewer points dropped (an absolute count; 1
+    keeps every cell), `depth_smooth_px` (0 = off) the diameter in pixels of the edge-preserving
+    bilateral filter applied to each frame's depth as disparity (1 / depth, where a structured-light
+    sensor's noise is even) before anything else, with range sigma `depth_smooth_disparity` (1/m):
+    depth noise spreads a surface across cells along the viewing ray, the largest cause of
+    footprints too large to match (docs/results.md, issue 29)."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -53,16 +56,20 @@ class MappingConfig(BaseModel):
     match_iou: float = Field(0.5, ge=0, lt=1)
     small_fraction: float = Field(0.2, gt=0, le=1)
     # geometry cleaning before projection (mapping/clean.py; not in the paper). Chosen on tuning seeds
-    # 0-4 of both profiles by matched seen objects per scene, of 71.6 (realistic / easy): uncleaned
-    # 43.8 / 60.4; erosion 1 px + 3 points per cell 49.2 realistic (each alone on easy: 59.6, 60.6);
-    # with a depth-edge jump of 0.03 as well 50.8 / 55.2 (the edge step alone, easy: 60.4 -> 56.6,
-    # on exact depth it cuts slanted surfaces), so it is off. Grid: erosion {0..3} px x edge jump
-    # {off, 0.02, 0.03, 0.05, 0.1} x points per cell {1..5}; a relative support (0.2-0.5 of the
+    # 0-4 of both profiles by matched seen objects per scene, of 71.6 (realistic / easy), with
+    # `python -m iesm_agent.evals.studies.mapping_causes` (docs/results.md, issue 29):
+    # uncleaned 43.8 / 60.4; erosion 1 px + 3 points per cell (the first cut) 49.2 / 56.6; with the
+    # bilateral depth smoothing on disparity (diameter 7 px, range 0.01 1/m) 57.2 / 57.6, and with one
+    # point per cell instead of three 57.6 / 59.2 (the defaults). Smoothing diameter {5, 7, 9, 11} x
+    # range 0.01-0.04 (8 settings): 56.0-57.2 realistic; with smoothing, erosion 0 / 2 px 56.4 / 55.6, points
+    # per cell 2 / 5: 56.6 / 54.0 (erosion 0 with one point per cell: 52.8). A depth-edge jump of 0.03 (before smoothing) cut slanted surfaces
+    # under exact depth (easy 60.4 -> 56.6), so it is off; a relative cell support (0.2-0.5 of the
     # candidate's mean points per cell) matched 37.8-47.6 realistic.
-    # (`python -m iesm_agent.evals.studies.mapping_causes`, docs/results.md)
     mask_erode_px: int = Field(1, ge=0)
     depth_edge_jump: Optional[float] = Field(None, gt=0)
-    min_cell_points: int = Field(3, ge=1)
+    min_cell_points: int = Field(1, ge=1)
+    depth_smooth_px: int = Field(7, ge=0)
+    depth_smooth_disparity: float = Field(0.01, gt=0)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -73,7 +80,8 @@ class MappingConfig(BaseModel):
     @classmethod
     def uncleaned(cls, **values: Any) -> "MappingConfig":
         """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
-        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, **values})
+        return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
+                      **values})
 
 
 class RetrievalConfig(BaseModel):

@@ -3,7 +3,7 @@
 import numpy as np
 
 from iesm_agent.config import MappingConfig
-from iesm_agent.mapping.clean import clean_masks, depth_edges
+from iesm_agent.mapping.clean import clean_masks, depth_edges, smooth_depth
 from iesm_agent.mapping.project import project_candidates
 
 
@@ -66,5 +66,23 @@ def test_min_cell_points_drops_thinly_supported_cells_and_empty_candidates():
 def test_paper_and_uncleaned_turn_cleaning_off():
     for cfg in (MappingConfig.paper(), MappingConfig.uncleaned()):
         assert cfg.mask_erode_px == 0 and cfg.depth_edge_jump is None
-        assert cfg.min_cell_points == 1
+        assert cfg.min_cell_points == 1 and cfg.depth_smooth_px == 0
+    assert MappingConfig().depth_smooth_px > 0
     assert MappingConfig.paper().delta_geo_strong is None
+
+
+def test_smoothing_averages_noise_on_a_surface_but_keeps_edges_and_holes():
+    """Two walls at 2 m and 3 m with per-pixel noise growing as depth squared (a structured-light
+    sensor), and a hole: the noise falls, the step between the walls stays sharp, the hole stays."""
+    rng = np.random.default_rng(0)
+    exact = np.full((60, 80), 3.0, np.float32)
+    exact[:, 40:] = 2.0
+    noisy = exact + rng.standard_normal(exact.shape).astype(np.float32) * 0.003 * exact ** 2
+    noisy[20:25, 10:15] = 0.0
+    out = smooth_depth(noisy, 7, 0.01)
+    seen = noisy > 0
+    assert (out[~seen] == 0).all() and (out[seen] > 0).all()
+    before, after = np.abs(noisy - exact)[seen].mean(), np.abs(out - exact)[seen].mean()
+    assert after < before / 2
+    assert np.abs(out - exact)[:, 37:43].max() < 0.15          # no blur across the 1 m step
+    assert np.array_equal(smooth_depth(exact, 7, 0.01) > 0, exact > 0)

@@ -13,7 +13,7 @@ from ..config import MappingConfig
 from ..errors import IesmError
 from ..frames import Frame, FrameSet, Intrinsics, Segmentation, Segmenter
 from ..store.model import SceneMap
-from .clean import clean_masks
+from .clean import clean_masks, smooth_depth
 from .dictionary import InstanceDictionary
 from .project import project_candidates
 
@@ -33,9 +33,11 @@ class MapBuilder:
     def add(self, frame: Frame, seg: Segmentation) -> None:
         """Project, associate and fuse one frame's candidates."""
         k, cfg = self.intrinsics, self.cfg
-        masks = clean_masks(seg.masks, frame.depth, erode_px=cfg.mask_erode_px, edge_jump=cfg.depth_edge_jump,
+        depth = (smooth_depth(frame.depth, cfg.depth_smooth_px, cfg.depth_smooth_disparity) if cfg.depth_smooth_px
+                 else frame.depth)
+        masks = clean_masks(seg.masks, depth, erode_px=cfg.mask_erode_px, edge_jump=cfg.depth_edge_jump,
                             min_pixels=cfg.min_mask_pixels)
-        cands = project_candidates(frame.depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size,
+        cands = project_candidates(depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size,
                                    min_pixels=cfg.min_mask_pixels, max_depth=cfg.max_depth,
                                    min_cell_points=cfg.min_cell_points)
         if self.dictionary is None:

@@ -3,7 +3,8 @@
     python -m iesm_agent.evals.studies.mapping_causes --seeds 0-4 --allow-tuning-seeds --realism realistic --out docs/results/mapping-causes-tuning
 
 For each seed: render the scene (iesm_agent.sim, the given profile), build the map under each
-configuration of `VARIANTS` (the paper's rules, our rules before geometry cleaning, ours), match it
+configuration of `VARIANTS` (the paper's rules, our rules before geometry cleaning, the first
+cleaning without depth smoothing, ours), match it
 against the observed footprints (evals/mapping.py) and give every unmatched seen object one cause
 (evals/mapping_causes.py). Writes OUT/table.md + OUT/summary.json.
 """
@@ -20,7 +21,8 @@ from ...config import MappingConfig
 from ...frames import FrameSet
 from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
-from . import log_stderr, scene_frames, study_command, study_main, write_table
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+               study_main, write_table)
 from ..mapping import EvalContext, prediction_from_map, score
 from ..mapping_causes import CAUSES, cause_counts, mask_objects, unmatched_causes
 
@@ -28,6 +30,8 @@ from ..mapping_causes import CAUSES, cause_counts, mask_objects, unmatched_cause
 VARIANTS: dict[str, tuple[str, Callable[[], MappingConfig]]] = {
     "paper": ("MappingConfig.paper()", MappingConfig.paper),
     "before": ("Ours before cleaning (MappingConfig.uncleaned())", lambda: MappingConfig.uncleaned()),
+    "first-cut": ("Ours without depth smoothing (mask erosion 1 px, 3 points per cell)",
+                  lambda: MappingConfig(depth_smooth_px=0, min_cell_points=3)),
     "ours": ("Ours (MappingConfig())", MappingConfig),
 }
 
@@ -100,10 +104,16 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
     return per_scene
 
 
+def command(seeds: Seeds = "0-4", realism: Realism = "realistic",
+            out: Out = Path("docs/results/mapping-causes-tuning"), work: Work = None,
+            allow_tuning_seeds: AllowTuningSeeds = False) -> None:
+    run_checked(seeds, realism, allow_tuning_seeds, out,
+                lambda seed_list: run_study(seed_list, out, realism=realism, seeds_arg=seeds, work=work,
+                                            log=log_stderr))
+
+
 def main(argv: list[str] | None = None) -> int:
-    return study_main("mapping_causes", __doc__, "0-4", "docs/results/mapping-causes-tuning",
-                      lambda a, seeds: run_study(seeds, a.out, realism=a.realism, seeds_arg=a.seeds, work=a.work,
-                                                 log=log_stderr), argv)
+    return study_main("mapping_causes", __doc__, command, argv)
 
 
 if __name__ == "__main__":
