@@ -1,7 +1,7 @@
 """The offline captioner: only what pixels and geometry can tell (no language model).
 
 Colour: the lightness-robust median of the masked pixels of every keyframe crop
-(`colours.masked_lab`) after bringing the keyframe to the scene's exposure and white balance
+(`colours.masked_lab`) after bringing the keyframe to the scene's white balance
 (`Crop.gain`, `colours.constancy`), the median over crops, named by the nearest XKCD colour under
 CIEDE2000 allowing for room lighting (`colours.OBSERVED_SHADING`). Size and height class from the map: footprint area and the highest top.
 """
