@@ -17,8 +17,8 @@ import sys
 from pathlib import Path
 from typing import Optional
 
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
-               study_main, write_table)
+from . import (TUNING_SEEDS, AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames,
+               study_command, study_main, write_table)
 
 
 class PlainColourCaptioner:
@@ -53,7 +53,30 @@ def score_scene(frames: Path, built: Path) -> dict:
     scene, gt = load_map(built), GroundTruth.load(frames)
     ours = colour_scores(caption_map(scene, frames, OfflineCaptioner()), gt, frames_dir=frames)
     plain = colour_scores(caption_map(scene, frames, PlainColourCaptioner()), gt, frames_dir=frames)
-    return {**ours, "plain_colour_acc": plain["colour_acc"], "plain_colour_name_acc": plain["colour_name_acc"]}
+    return {**ours, "plain_colour_acc": plain["colour_acc"], "plain_colour_name_acc": plain["colour_name_acc"],
+            "plain_misses": plain["misses"]}
+
+
+def _confusion_table(rows: dict) -> list[str]:
+    """Per true colour over all seeds: instances, family hits of the plain rule and of ours, and
+    what ours said when it missed."""
+    from collections import Counter
+
+    truths: Counter[str] = Counter()
+    misses = {"plain": Counter(), "ours": Counter()}
+    for r in rows.values():
+        truths.update(r["truths"])
+        misses["ours"].update(r["misses"])
+        misses["plain"].update(r["plain_misses"])
+    lines = ["## Misses by true colour (all seeds)", "", "| true colour | instances | family hits, plain | "
+             "family hits, ours | ours said instead |", "|---|---:|---:|---:|---|"]
+    for truth, n in sorted(truths.items(), key=lambda t: (-t[1], t[0])):
+        missed = {k: Counter({key.split(" -> ", 1)[1]: c for key, c in m.items() if key.split(" -> ", 1)[0] == truth})
+                  for k, m in misses.items()}
+        said = ", ".join(f"{name} {c}" for name, c in missed["ours"].most_common())
+        lines.append(f"| {truth} | {n} | {n - sum(missed['plain'].values())} | {n - sum(missed['ours'].values())} | "
+                     f"{said} |")
+    return lines
 
 
 def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: Optional[Path] = None,
@@ -67,7 +90,9 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: O
                 f"{rows[seed]['colour_name_acc']:.3f} (n={rows[seed]['n']})")
     mean = {k: statistics.fmean(r[k] for r in rows.values() if r[k] is not None)
             for k in ("colour_acc", "colour_name_acc", "plain_colour_acc", "plain_colour_name_acc")}
-    lines = [f"Profile `{realism}`; walled `--size small` scenes, seeds {seeds_arg} (not used for tuning); offline "
+    tuning = "tuning seeds: the colour rule's constants were chosen on them" if set(seeds) & TUNING_SEEDS \
+        else "not used for tuning"
+    lines = [f"Profile `{realism}`; walled `--size small` scenes, seeds {seeds_arg} ({tuning}); offline "
              "captioner on the built map; instances matched to ground truth (observed footprint, top-down IoU > 0.5) "
              "and seen in >= 3 "
              "frames. Plain rule: nearest name of the median recorded pixel colour; ours: keyframes brought to the "
@@ -79,6 +104,7 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: O
         lines.append(f"| {seed} | {r['n']} | " + " | ".join(f"{r[k]:.3f}" for k in keys) + " |")
     lines.append(f"| mean | {statistics.fmean(r['n'] for r in rows.values()):.1f} | "
                  + " | ".join(f"{mean[k]:.3f}" for k in keys) + " |")
+    lines += ["", *_confusion_table(rows)]
     summary = {"seeds": seeds, "realism": realism, "rows": rows, "mean": mean}
     write_table(out, f"Caption colours on built maps ({realism} profile)",
                 study_command("captions", seeds_arg, realism, out), "\n".join(lines), summary)
