@@ -164,3 +164,20 @@ def test_small_parts_join_the_neighbour_they_share_most_border_with():
     out = _absorb_small(parts, np.ones_like(parts, bool), min_cells=10)
     assert set(np.unique(out).tolist()) == {0, 1} and (out[8:10, 0:2] == 0).all()
     assert (out[0:2, 3:5] == 0).all()           # 4 border cells with part 0 against 2 with part 1
+
+
+def test_a_small_room_inside_a_large_one_is_cut_out_only_where_its_objects_stand():
+    from iesm_agent.rooms.segment import _label_parts
+
+    truth = np.zeros((120, 120), np.int32)     # a 6 m x 6 m hallway (label 0) ...
+    truth[:30, :30] = 1                        # ... with a 1.5 m x 1.5 m bathroom (label 1) in a corner
+    labels = _noisy(truth, 0.3, 2, seed=6)
+    mask = np.ones_like(truth, bool)
+    config = RoomConfig()
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config)) == 1    # too little evidence to split
+    objects = np.zeros((2, 120, 120), np.float32)
+    objects[1, 5:15, 5:15] = 1.0               # a toilet's footprint
+    parts = _label_parts(mask, labels, objects, 2, 0.05, config)
+    assert len(parts) == 2
+    bathroom = next(part for part in parts if part[10, 10])
+    assert (truth[bathroom] == 1).mean() > 0.9 and bathroom.sum() > 0.8 * 900

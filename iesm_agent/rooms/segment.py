@@ -42,7 +42,9 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     `split_smoothing` m; equal-label connected cells form a part; parts under `min_room_area` m^2,
     and cells without evidence nearby, join the neighbouring part they share the longest border with.
     The parts are kept when their own majorities explain `split_gain` more of the evidence than the
-    room's single majority."""
+    room's single majority; failing that, a part alone is cut out when its label beats the room's
+    majority inside it by `split_gain` of its evidence and room-typical objects of its label stand
+    in it (a bathroom off a large hallway)."""
     import cv2
 
     inside = mask & (labels >= 0)
@@ -65,10 +67,22 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     ids = np.unique(parts[mask])
     if len(ids) < 2:
         return [mask]
-    explained = sum(float(evidence[:, parts == part].sum(axis=1).max()) for part in ids.tolist())
-    if (explained - float(total.max())) / float(total.sum()) < config.split_gain:
+    part_masks = [parts == part for part in ids.tolist()]
+    part_evidence = np.stack([evidence[:, part].sum(axis=1) for part in part_masks])  # (P, L)
+    if (part_evidence.max(axis=1).sum() - total.max()) / total.sum() >= config.split_gain:
+        return part_masks
+    # a small room inside a large one holds too little of the evidence for that test; it stands
+    # alone when its own label beats the room's majority inside it by `split_gain` of its evidence
+    # and objects typical of its label stand in it
+    major, own = int(total.argmax()), part_evidence.argmax(axis=1)
+    margin = (part_evidence.max(axis=1) - part_evidence[:, major]) / np.maximum(part_evidence.sum(axis=1), 1e-9)
+    alone = [part for k, part in enumerate(part_masks)
+             if own[k] != major and margin[k] >= config.split_gain and objects is not None
+             and float(objects[own[k]][part].sum()) > 0]
+    if not alone:
         return [mask]
-    return [parts == part for part in ids.tolist()]
+    rest = mask & ~np.logical_or.reduce(alone)
+    return ([rest] if rest.any() else []) + alone
 
 
 def _absorb_small(parts: np.ndarray, mask: np.ndarray, min_cells: float) -> np.ndarray:
