@@ -181,3 +181,16 @@ def test_a_small_room_inside_a_large_one_is_cut_out_only_where_its_objects_stand
     assert len(parts) == 2
     bathroom = next(part for part in parts if part[10, 10])
     assert (truth[bathroom] == 1).mean() > 0.9 and bathroom.sum() > 0.8 * 900
+
+
+def test_room_labels_weigh_room_typical_objects_with_the_cell_labels():
+    from iesm_agent.rooms.segment import _majority_labels
+
+    room_map = np.zeros((10, 10), np.int32)
+    labels = np.zeros((10, 10), np.int32)
+    labels[:, :6] = 1                          # cells: 60 say bedroom (1), 40 bathroom (0)
+    votes = np.zeros((2, 10, 10), np.float32)
+    assert _majority_labels(room_map, labels, 1, 2).tolist() == [1]
+    assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [1]
+    votes[0, 2:7, 2:7] = 1.0                   # a toilet's and a bathtub's footprint: 25 bathroom votes
+    assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [0]

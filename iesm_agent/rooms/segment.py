@@ -160,7 +160,8 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                 parent.append(room)
                 n_rooms += 1
     room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
-    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels),
+    votes = None if object_evidence is None else config.object_vote_weight * object_evidence
+    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels, votes),
                                                parent)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
@@ -230,9 +231,14 @@ def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, 
     return out
 
 
-def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int) -> np.ndarray:
-    """(R,) majority per-cell label index of each room, -1 for a room with no labelled cell."""
+def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
+                     votes: Optional[np.ndarray] = None) -> np.ndarray:
+    """(R,) label index with the most evidence in each room: its per-cell labels, plus the summed
+    (L, H, W) object `votes` over its cells when given (the split's evidence); -1 for a room with none."""
     both = (room_map >= 0) & (labels >= 0)
     counts = np.bincount(room_map[both] * n_labels + labels[both],
-                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels)
+                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels).astype(np.float64)
+    if votes is not None:
+        inside = room_map >= 0
+        counts += np.stack([np.bincount(room_map[inside], weights=v[inside], minlength=n_rooms) for v in votes], axis=1)
     return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)
