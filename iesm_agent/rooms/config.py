@@ -25,8 +25,11 @@ class RoomConfig(BaseModel):
     `object_vote_weight` x the votes of room-typical objects, per footprint cell); connected cells
     of one label form a part, parts under `min_room_area` join their longest-bordering neighbour,
     and the parts are kept when their own majorities explain `split_gain` more of the evidence than
-    the room's single majority. `split_smoothing`, with the other split settings, was chosen on
-    tuning seeds 0-4 (walled and open-plan, realistic profile).
+    the room's single majority (or, for a single part, when its own label beats the room's majority
+    inside it by `split_gain` and objects typical of its label stand in it). With the split on,
+    every room then takes the label with the most evidence (per-cell labels plus
+    `object_vote_weight` x object votes); off, the paper's majority per-cell label. `split_smoothing`, with the other split settings, was chosen on tuning
+    seeds 0-4 (walled and open-plan, realistic profile).
     """
 
     model_config = ConfigDict(extra="forbid")

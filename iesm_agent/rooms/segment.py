@@ -6,7 +6,8 @@ geodesically over the boundary margin and the rest of the sealed building (the d
 them); a large room whose smoothed per-cell labels (plus room-typical objects) form separate
 label-coherent parts is cut into them (open plan, and narrow rooms such as a hallway whose own free
 space was too small to be a room and that a neighbour grew into); rooms then take large furniture
-and share the walls between them; each room takes the majority per-cell label.
+and share the walls between them; each room takes the label with the most evidence (its per-cell
+labels plus the votes of room-typical objects, as in the split).
 """
 
 from __future__ import annotations
