@@ -28,8 +28,9 @@ class RoomConfig(BaseModel):
     the room's single majority (or, for a single part, when its own label beats the room's majority
     inside it by `split_gain` and objects typical of its label stand in it). With the split on,
     every room then takes the label with the most evidence (per-cell labels plus
-    `object_vote_weight` x object votes); off, the paper's majority per-cell label. `split_smoothing`, with the other split settings, was chosen on tuning
-    seeds 0-4 (walled and open-plan, realistic profile).
+    `object_vote_weight` x object votes); off, the paper's majority per-cell label.
+    `split_smoothing`, with the other split settings, was chosen on tuning seeds 0-4 (walled and
+    open-plan, realistic profile).
     """
 
     model_config = ConfigDict(extra="forbid")
