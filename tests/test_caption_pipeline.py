@@ -211,10 +211,12 @@ def test_colour_scores_by_family_and_by_exact_name(tiny):
     captioned = caption_map(scene, frames_dir, OfflineCaptioner())
     assert eval_section(captioned, gt, frames_dir)["captions"]["source"] == "offline"
     assert colour_scores(captioned, gt, min_frames=5) == {"colour_acc": None, "colour_name_acc": None,
-                                                           "n": 0, "min_frames": 5}
+                                                           "n": 0, "min_frames": 5, "truths": {}, "misses": {}}
     wrong = captioned.model_copy(update={"instances": [
         i.model_copy(update={"tags": {**i.tags, "color": "red"}}) if i.id == 1 else i for i in captioned.instances]})
-    assert colour_scores(wrong, gt)["colour_acc"] == 0.5
+    scores = colour_scores(wrong, gt)
+    assert scores["colour_acc"] == 0.5 and scores["truths"] == {"navy": 1, "cream": 1}
+    assert scores["misses"] == {"navy -> red": 1}
 
 
 def test_strip_removes_captions_and_caption_tags_only(tiny, tmp_path):

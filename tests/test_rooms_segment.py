@@ -124,3 +124,73 @@ def test_split_parts_with_the_same_label_are_rejoined():
     labels = np.array([4, 1, 2, 4])        # room 3 ended up with component 0's label
     merged, merged_labels = _merge_alike_parts(room_map, labels, parent)
     assert merged.tolist() == [[0, 0, 2, 2, 0, -1, 1]] and merged_labels.tolist() == [4, 1, 2]
+
+
+def _noisy(truth: np.ndarray, flip: float, n_labels: int, seed: int) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    noisy = rng.random(truth.shape) < flip
+    return np.where(noisy, rng.integers(0, n_labels, truth.shape), truth).astype(np.int32)
+
+
+def test_label_parts_cut_an_l_shaped_room_that_no_straight_line_separates():
+    from iesm_agent.rooms.segment import _label_parts
+
+    truth = np.zeros((80, 80), np.int32)       # 4 m x 4 m at 5 cm: an L-shaped kitchen (label 1)
+    truth[:25] = 1
+    truth[:, :25] = 1                          # around a living room (label 0) in the other corner
+    labels = _noisy(truth, 0.3, 3, seed=4)
+    mask = np.ones_like(truth, bool)
+    parts = _label_parts(mask, labels, None, 3, 0.05, RoomConfig())
+    assert len(parts) == 2
+    for part in parts:
+        assert np.bincount(truth[part]).max() / part.sum() > 0.95   # each part is one true room
+
+
+def test_label_parts_keep_a_room_whole_when_its_labels_are_only_noise():
+    from iesm_agent.rooms.segment import _label_parts
+
+    labels = _noisy(np.full((80, 80), 2, np.int32), 0.5, 4, seed=5)
+    mask = np.ones(labels.shape, bool)
+    assert len(_label_parts(mask, labels, None, 4, 0.05, RoomConfig())) == 1
+
+
+def test_small_parts_join_the_neighbour_they_share_most_border_with():
+    from iesm_agent.rooms.segment import _absorb_small
+
+    parts = np.zeros((10, 10), np.int32)
+    parts[:, 5:] = 1
+    parts[0:2, 3:5] = 2                        # 4 cells: 4 border cells with part 0, 2 with part 1
+    parts[8:10, 0:2] = -1                      # cells without a part, inside part 0
+    out = _absorb_small(parts, np.ones_like(parts, bool), min_cells=10)
+    assert set(np.unique(out).tolist()) == {0, 1} and (out[8:10, 0:2] == 0).all()
+    assert (out[0:2, 3:5] == 0).all()           # 4 border cells with part 0 against 2 with part 1
+
+
+def test_a_small_room_inside_a_large_one_is_cut_out_only_where_its_objects_stand():
+    from iesm_agent.rooms.segment import _label_parts
+
+    truth = np.zeros((120, 120), np.int32)     # a 6 m x 6 m hallway (label 0) ...
+    truth[:30, :30] = 1                        # ... with a 1.5 m x 1.5 m bathroom (label 1) in a corner
+    labels = _noisy(truth, 0.3, 2, seed=6)
+    mask = np.ones_like(truth, bool)
+    config = RoomConfig()
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config)) == 1    # too little evidence to split
+    objects = np.zeros((2, 120, 120), np.float32)
+    objects[1, 5:15, 5:15] = 1.0               # a toilet's footprint
+    parts = _label_parts(mask, labels, objects, 2, 0.05, config)
+    assert len(parts) == 2
+    bathroom = next(part for part in parts if part[10, 10])
+    assert (truth[bathroom] == 1).mean() > 0.9 and bathroom.sum() > 0.8 * 900
+
+
+def test_room_labels_weigh_room_typical_objects_with_the_cell_labels():
+    from iesm_agent.rooms.segment import _majority_labels
+
+    room_map = np.zeros((10, 10), np.int32)
+    labels = np.zeros((10, 10), np.int32)
+    labels[:, :6] = 1                          # cells: 60 say bedroom (1), 40 bathroom (0)
+    votes = np.zeros((2, 10, 10), np.float32)
+    assert _majority_labels(room_map, labels, 1, 2).tolist() == [1]
+    assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [1]
+    votes[0, 2:7, 2:7] = 1.0                   # a toilet's and a bathtub's footprint: 25 bathroom votes
+    assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [0]

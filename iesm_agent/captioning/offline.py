@@ -1,7 +1,8 @@
 """The offline captioner: only what pixels and geometry can tell (no language model).
 
 Colour: the lightness-robust median of the masked pixels of every keyframe crop
-(`colours.masked_lab`), the median over crops, named by the nearest XKCD colour under
+(`colours.masked_lab`) after bringing the keyframe to the scene's white balance
+(`Crop.gain`, `colours.constancy`), the median over crops, named by the nearest XKCD colour under
 CIEDE2000 allowing for room lighting (`colours.OBSERVED_SHADING`). Size and height class from the map: footprint area and the highest top.
 """
 
@@ -34,7 +35,7 @@ def measured_colour(view: InstanceView) -> Optional[str]:
         if mask.sum() >= ERODE_MIN_PX:
             eroded = cv2.erode(mask.astype(np.uint8), np.ones((3, 3), np.uint8)).astype(bool)
             mask = eroded if eroded.any() else mask
-        found = masked_lab(crop.rgb, mask)
+        found = masked_lab(crop.balanced_rgb(), mask)
         if found is not None:
             labs.append(found[0])
     if not labs:

@@ -17,11 +17,18 @@ MIN_MASK_PX = 20
 
 @dataclass
 class Crop:
-    """A keyframe crop: `rgb` (h, w, 3) uint8 and the instance's `mask` (h, w) bool inside it."""
+    """A keyframe crop: `rgb` (h, w, 3) uint8 and the instance's `mask` (h, w) bool inside it;
+    `gain` (3,) per-channel factor that brings the keyframe to the scene's white balance
+    (`colours.constancy`; ones when not estimated)."""
 
     frame: int
     rgb: np.ndarray
     mask: np.ndarray
+    gain: np.ndarray = field(default_factory=lambda: np.ones(3))
+
+    def balanced_rgb(self) -> np.ndarray:
+        """(h, w, 3) float64 sRGB 0-255: `rgb` times `gain`, clipped."""
+        return np.clip(self.rgb * self.gain, 0.0, 255.0)
 
 
 @dataclass
@@ -90,7 +97,10 @@ def build_views(scene: SceneMap, keyframes: dict[int, list[Keyframe]], read_fram
 
     `read_frame(i)` returns a `frames.Frame` with a segmentation; each frame is read once.
     `observed` maps instance id -> number of distinct frames it was seen in. `progress(n)` is
-    called after each frame read with the number of frames read so far."""
+    called after each frame read with the number of frames read so far. Each crop's `gain` brings
+    its keyframe to the white balance of the keyframes read (`colours.constancy`)."""
+    from ..colours.constancy import relative_gains, white_patch
+
     geometry = instance_geometry(scene)
     rooms = room_of_instances(scene)
     views = {i.id: InstanceView(i, rooms.get(i.id, (None, None))[1], geometry[i.id],
@@ -101,8 +111,10 @@ def build_views(scene: SceneMap, keyframes: dict[int, list[Keyframe]], read_fram
         if inst_id in views:
             for kf in frames:
                 by_frame.setdefault(kf.frame, []).append((inst_id, kf))
+    patches = {}
     for n, index in enumerate(sorted(by_frame), start=1):
         frame = read_frame(index)
+        patches[index] = white_patch(frame.rgb)
         seg = getattr(frame, "segmentation", None)
         if seg is None:
             raise IesmError("frame has no segmentation (seg.npz) but the map's observations refer to it",
@@ -113,7 +125,10 @@ def build_views(scene: SceneMap, keyframes: dict[int, list[Keyframe]], read_fram
                 views[inst_id].crops.append(crop)
         if progress is not None:
             progress(n)
+    gains = relative_gains(patches)
     for view in views.values():  # best keyframe first, as selected
+        for crop in view.crops:
+            crop.gain = gains[crop.frame]
         order = {kf.frame: r for r, kf in enumerate(keyframes.get(view.instance.id, ()))}
         view.crops.sort(key=lambda c: order.get(c.frame, 0))
     return list(views.values())

@@ -12,6 +12,7 @@ Instances without a caption colour count as misses.
 
 from __future__ import annotations
 
+from collections import Counter
 from pathlib import Path
 from typing import Optional
 
@@ -30,8 +31,9 @@ def _gt_colour(obj: dict) -> Optional[str]:
 
 
 def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES, frames_dir: Optional[Path] = None) -> dict:
-    """{"colour_acc", "colour_name_acc", "n", "min_frames"} of the map's caption colours
-    (accuracies None when no instance qualifies)."""
+    """{"colour_acc", "colour_name_acc", "n", "min_frames", "truths", "misses"} of the map's caption
+    colours (accuracies None when no instance qualifies); `truths` counts the scored instances per
+    true colour, `misses` the family misses as {"true colour -> said colour": count}."""
     from ..captioning.views import frames_seen
     from .observed import observed_masks
     from .matching import match_instances
@@ -41,16 +43,22 @@ def colour_scores(scene: SceneMap, gt, min_frames: int = MIN_FRAMES, frames_dir:
             else {i.id: len(i.frames) for i in scene.instances})
     objects = {int(o["id"]): o for o in gt.objects}
     family_hits = name_hits = n = 0
+    truths: Counter[str] = Counter()
+    misses: Counter[str] = Counter()
     for gt_id, pred_id in matched.items():
         truth = _gt_colour(objects.get(gt_id, {}))
         if truth is None or seen.get(pred_id, 0) < min_frames:
             continue
         said = scene.instance(pred_id).tags.get("color")
         n += 1
+        truths[truth] += 1
         name_hits += said == truth
-        family_hits += said is not None and colour_family(said) == colour_family(truth)
+        hit = said is not None and colour_family(said) == colour_family(truth)
+        family_hits += hit
+        if not hit:
+            misses[f"{truth} -> {said}"] += 1
     return {"colour_acc": family_hits / n if n else None, "colour_name_acc": name_hits / n if n else None,
-            "n": n, "min_frames": min_frames}
+            "n": n, "min_frames": min_frames, "truths": dict(truths), "misses": dict(misses)}
 
 
 def eval_section(scene: SceneMap, gt, frames_dir: Path) -> dict:

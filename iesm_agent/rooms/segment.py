@@ -1,11 +1,13 @@
 """Room segmentation (paper Sec. 3.2) with a contextual split for open-plan space.
 
 Free space = cells near observed space that are neither structural nor boundary (the LSD raster);
-its 4-connected components, large and observed enough, are room instances; an oversized component
-whose per-cell labels (plus room-typical objects) form two spatially separate clusters is cut along
-the axis-aligned line that separates them best; rooms then grow geodesically over the boundary
-margin and the rest of the sealed building (the drawn lines stop them), take large furniture, and
-share the walls between them; each room takes the majority per-cell label.
+its 4-connected components, large and observed enough, are room instances; rooms grow
+geodesically over the boundary margin and the rest of the sealed building (the drawn lines stop
+them); a large room whose smoothed per-cell labels (plus room-typical objects) form separate
+label-coherent parts is cut into them (open plan, and narrow rooms such as a hallway whose own free
+space was too small to be a room and that a neighbour grew into); rooms then take large furniture
+and share the walls between them; each room takes the label with the most evidence (its per-cell
+labels plus the votes of room-typical objects, as in the split).
 """
 
 from __future__ import annotations
@@ -33,63 +35,80 @@ class RoomSegmentation:
     notes: list[str] = field(default_factory=list)
 
 
-def _split_line(mask: np.ndarray, ev_a: np.ndarray, ev_b: np.ndarray, cell_area: float,
-                config: RoomConfig) -> Optional[tuple[int, int]]:
-    """(axis, t): cut `mask` (h, w) before row/column t when that axis-aligned line separates the
-    evidence maps `ev_a`, `ev_b` (h, w) of two labels well enough; None otherwise."""
-    tot_a, tot_b = float(ev_a.sum()), float(ev_b.sum())
-    total = tot_a + tot_b
-    if total <= 0 or min(tot_a, tot_b) / total < config.split_min_share:
-        return None
-    unsplit = max(tot_a, tot_b) / total
-    best: tuple[float, int, int] | None = None
-    for axis in (0, 1):
-        other = 1 - axis
-        cum_a = np.cumsum(ev_a.sum(axis=other))[:-1]
-        cum_b = np.cumsum(ev_b.sum(axis=other))[:-1]
-        area = np.cumsum(mask.sum(axis=other))[:-1] * cell_area
-        purity = np.maximum(cum_a + tot_b - cum_b, cum_b + tot_a - cum_a) / total
-        valid = (area >= config.min_room_area) & (mask.sum() * cell_area - area >= config.min_room_area)
-        if valid.any():
-            t = int(np.argmax(np.where(valid, purity, -1.0)))
-            if best is None or purity[t] > best[0]:
-                best = (float(purity[t]), axis, t + 1)
-    if best is None or best[0] < config.split_purity or best[0] - unsplit < config.split_gain:
-        return None
-    return best[1], best[2]
+def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndarray], n_labels: int,
+                 cell_size: float, config: RoomConfig) -> list[np.ndarray]:
+    """Cut a room `mask` (h, w) into label-coherent parts; returns disjoint masks (just `mask` when
+    no cut pays). Each cell takes the label with the most evidence (per-cell `labels` (h, w), plus
+    `object_vote_weight` x the object evidence `objects` (L, h, w)) within a Gaussian of
+    `split_smoothing` m; equal-label connected cells form a part; parts under `min_room_area` m^2,
+    and cells without evidence nearby, join the neighbouring part they share the longest border with.
+    The parts are kept when their own majorities explain `split_gain` more of the evidence than the
+    room's single majority; failing that, a part alone is cut out when its label beats the room's
+    majority inside it by `split_gain` of its evidence and room-typical objects of its label stand
+    in it (a bathroom off a large hallway)."""
+    import cv2
 
-
-def _split_component(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndarray], n_labels: int,
-                     cell_area: float, config: RoomConfig, depth: int) -> list[np.ndarray]:
-    """Recursively split `mask` (h, w) by the per-cell `labels` (h, w) and the optional object
-    evidence `objects` (L, h, w); returns disjoint masks."""
-    if depth >= config.split_max_depth or np.count_nonzero(mask) * cell_area < config.split_min_area:
-        return [mask]
     inside = mask & (labels >= 0)
-    totals = np.bincount(labels[inside], minlength=n_labels).astype(np.float64)
+    evidence = np.stack([(inside & (labels == label)).astype(np.float32) for label in range(n_labels)])
     if objects is not None:
-        totals += config.object_vote_weight * np.tensordot(objects, mask.astype(np.float32), axes=([1, 2], [0, 1]))
-    if np.count_nonzero(totals) < 2:
+        evidence += config.object_vote_weight * objects * mask
+    total = evidence.sum(axis=(1, 2))
+    if np.count_nonzero(total) < 2:
         return [mask]
-    b, a = np.argsort(totals, kind="stable")[-2:]
-
-    def evidence(label: int) -> np.ndarray:
-        ev = (inside & (labels == label)).astype(np.float32)
-        if objects is not None:
-            ev += config.object_vote_weight * objects[label] * mask
-        return ev
-
-    line = _split_line(mask, evidence(a), evidence(b), cell_area, config)
-    if line is None:
+    sigma = config.split_smoothing / cell_size
+    smooth = np.stack([cv2.GaussianBlur(e, (0, 0), sigma) for e in evidence]) if sigma > 0 else evidence
+    choice = np.where(mask & (smooth.max(axis=0) > 0), smooth.argmax(axis=0), -1)
+    parts = np.full(mask.shape, -1, np.int32)
+    count = 0
+    for label in np.unique(choice[choice >= 0]).tolist():
+        n, comp = cv2.connectedComponents((choice == label).astype(np.uint8), connectivity=4)
+        parts[comp > 0] = comp[comp > 0] - 1 + count
+        count += n - 1
+    parts = _absorb_small(parts, mask, config.min_room_area / cell_size ** 2)
+    ids = np.unique(parts[mask])
+    if len(ids) < 2:
         return [mask]
-    axis, t = line
-    side = np.zeros(mask.shape, bool)
-    if axis == 0:
-        side[:t] = True
-    else:
-        side[:, :t] = True
-    return [part for half in (mask & side, mask & ~side)
-            for part in _split_component(half, labels, objects, n_labels, cell_area, config, depth + 1)]
+    part_masks = [parts == part for part in ids.tolist()]
+    part_evidence = np.stack([evidence[:, part].sum(axis=1) for part in part_masks])  # (P, L)
+    if (part_evidence.max(axis=1).sum() - total.max()) / total.sum() >= config.split_gain:
+        return part_masks
+    # a small room inside a large one holds too little of the evidence for that test; it stands
+    # alone when its own label beats the room's majority inside it by `split_gain` of its evidence
+    # and objects typical of its label stand in it
+    major, own = int(total.argmax()), part_evidence.argmax(axis=1)
+    margin = (part_evidence.max(axis=1) - part_evidence[:, major]) / np.maximum(part_evidence.sum(axis=1), 1e-9)
+    alone = [part for k, part in enumerate(part_masks)
+             if own[k] != major and margin[k] >= config.split_gain and objects is not None
+             and float(objects[own[k]][part].sum()) > 0]
+    if not alone:
+        return [mask]
+    rest = mask & ~np.logical_or.reduce(alone)
+    return ([rest] if rest.any() else []) + alone
+
+
+def _absorb_small(parts: np.ndarray, mask: np.ndarray, min_cells: float) -> np.ndarray:
+    """`parts` (h, w) int32 part id per cell of `mask` (-1: no part) with every part smaller than
+    `min_cells`, and every unassigned cell, joined to the neighbouring part with the longest shared
+    border (smallest first); a part with no neighbour stays."""
+    import cv2
+
+    cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))
+    parts = parts.copy()
+    stuck: set[int] = set()
+    while True:
+        ids, sizes = np.unique(parts[mask], return_counts=True)
+        small = [(size, part) for part, size in zip(ids.tolist(), sizes.tolist())
+                 if (part < 0 or size < min_cells) and part not in stuck]
+        if not small or len(ids) < 2:
+            return parts
+        part = min(small)[1]
+        own = mask & (parts == part)
+        ring = cv2.dilate(own.astype(np.uint8), cross).astype(bool) & mask & ~own & (parts >= 0)
+        if not ring.any():
+            stuck.add(part)
+            continue
+        neighbours, border = np.unique(parts[ring], return_counts=True)
+        parts[own] = neighbours[np.argmax(border)]
 
 
 def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabels, cell_size: float,
@@ -123,27 +142,27 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     lut[keep] = np.arange(int(keep.sum()), dtype=np.int32)
     room_map = lut[comp]
     n_rooms = int(keep.sum())
-    parent = list(range(n_rooms))  # the free component each room comes from
-    if config.split and n_rooms and n_labels >= 2:
-        big = area[keep] * cell_area >= config.split_min_area
-        for room, (c0, r0, width, height) in enumerate(stats[keep, :4].tolist()):
-            if not big[room]:
-                continue
-            r1, c1 = r0 + height, c0 + width
-            crop = room_map[r0:r1, c0:c1]
-            objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
-            parts = _split_component(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_area, config, 0)
-            for part in parts[1:]:
-                crop[part] = n_rooms
-                parent.append(room)
-                n_rooms += 1
     margin = int(np.ceil((config.dilate + config.close) / cell_size)) + config.line_thickness + 2
     open_cells = ~walls & ~boundaries.lines
     room_map = _grow(room_map, near_known & open_cells, margin)
     building = _enclosed(walls | boundaries.raster)
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
+    parent = list(range(n_rooms))  # the free component each room comes from
+    if config.split and n_labels >= 2:
+        for room in range(n_rooms):
+            rows, cols = np.nonzero(room_map == room)
+            if len(rows) * cell_area < config.split_min_area:
+                continue
+            r0, r1, c0, c1 = rows.min(), rows.max() + 1, cols.min(), cols.max() + 1
+            crop = room_map[r0:r1, c0:c1]
+            objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
+            for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config)[1:]:
+                crop[part] = n_rooms
+                parent.append(room)
+                n_rooms += 1
     room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
-    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels),
+    votes = None if object_evidence is None else config.object_vote_weight * object_evidence
+    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels, votes),
                                                parent)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
@@ -213,9 +232,14 @@ def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, 
     return out
 
 
-def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int) -> np.ndarray:
-    """(R,) majority per-cell label index of each room, -1 for a room with no labelled cell."""
+def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
+                     votes: Optional[np.ndarray] = None) -> np.ndarray:
+    """(R,) label index with the most evidence in each room: its per-cell labels, plus the summed
+    (L, H, W) object `votes` over its cells when given (the split's evidence); -1 for a room with none."""
     both = (room_map >= 0) & (labels >= 0)
     counts = np.bincount(room_map[both] * n_labels + labels[both],
-                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels)
+                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels).astype(np.float64)
+    if votes is not None:
+        inside = room_map >= 0
+        counts += np.stack([np.bincount(room_map[inside], weights=v[inside], minlength=n_rooms) for v in votes], axis=1)
     return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)
