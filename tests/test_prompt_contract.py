@@ -30,8 +30,18 @@ def test_every_retrieval_template_declares_its_task_and_reply_format(name, task)
     messages = PromptLibrary().render(name, **VARS)
     text = "\n".join(m.text() for m in messages)
     assert text.count(contract.task_line(task)) == 1 and contract.task_line(task) in text.splitlines()
-    assert contract.reply_format(task, 3) in text
+    assert contract.reply_format(task, 3, hints=False) in text  # the gate asks for hints only when told to
     assert read_prompt(messages).task == task
+
+
+def test_the_gate_asks_for_hints_only_when_the_experts_get_them():
+    plain, hinted = ("\n".join(m.text() for m in PromptLibrary().render("gate.j2", **VARS, **extra))
+                     for extra in ({}, {"hints": True}))
+    assert '"hints"' not in plain and contract.reply_format(contract.GATE, hints=True) in hinted
+    assert "hints" not in contract.gate_schema(("obj", "room"), hints=False)["properties"]
+    assert contract.gate_schema(("obj", "room"))["required"] == ["scores", "hints"]
+    assert (contract.max_reply_tokens(contract.gate_schema(("obj", "room"), hints=False))
+            < contract.max_reply_tokens(contract.gate_schema(("obj", "room"))) / 3)
 
 
 class _Recorder(Model):
