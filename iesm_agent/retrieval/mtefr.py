@@ -2,8 +2,11 @@
 
 By default the gate and every expert run concurrently (one model round trip per query). With
 `skip_below` set (cost-saving mode) the gate runs first; only experts whose weight reaches the
-threshold are called, and they get the gate's hints. A single expert needs no gate (weight 1);
-with `gate=False` (method `mtefr-uniform`) no gate is asked and every expert weighs the same.
+threshold are called, and they get the gate's hints. With a model that serves one call at a time
+(the calls queue anyway) the gate also runs first and experts it gives weight 0 are not called.
+An expert that reads geometry (the spatial one) is called only when the reading of the query finds
+a spatial relation. A single expert needs no gate (weight 1); with `gate=False` (method
+`mtefr-uniform`) no gate is asked and every expert weighs the same.
 """
 
 from __future__ import annotations
