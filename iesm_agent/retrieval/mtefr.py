@@ -64,6 +64,18 @@ def asked_experts(specs: Sequence[ExpertSpec], query: str) -> tuple[list[ExpertS
     return asked, [s for s in specs if s not in asked]
 
 
+def _weighted(session: Session, specs: Sequence[ExpertSpec], weights: dict[str, float],
+              skip_below: float | None) -> list[ExpertSpec]:
+    """The experts to ask after the gate: weight >= `skip_below` (or the top weight when lower),
+    or with `skip_below` None any weight above 0; the others are noted as not asked."""
+    floor = min(skip_below, max(weights.values())) if skip_below is not None else None
+    active = [s for s in specs if (weights[s.name] > 0 if floor is None else weights[s.name] >= floor)]
+    if len(active) < len(specs):
+        session.notes.append(f"not asked, gate weight {'0' if floor is None else f'under {floor:.2f}'}: "
+                             + ", ".join(s.name for s in specs if s not in active))
+    return active
+
+
 async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], candidate_ids: Sequence[int],
                     views: CandidateViews, config: RetrievalConfig, gate: bool = True) -> Outcome:
     """Gate + experts + fusion over `candidate_ids` (uniform weights without the gate when
@@ -101,13 +113,8 @@ async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], c
             weights, hints = _gate_weights(session, gate_reply, names)
         else:
             weights, hints = _gate_weights(session, await gate_call, names)
-            floor = min(config.skip_below, max(weights.values())) if config.skip_below is not None else None
-            active = [s for s in specs if (weights[s.name] > 0 if floor is None else weights[s.name] >= floor)]
-            replies = await asyncio.gather(*ask(active, hints if floor is not None else {}))
-            skipped = [s for s in specs if s not in active]
-            if skipped:
-                session.notes.append(f"not asked, gate weight {'0' if floor is None else f'under {floor:.2f}'}: "
-                                     + ", ".join(s.name for s in skipped))
+            active = _weighted(session, specs, weights, config.skip_below)
+            replies = await asyncio.gather(*ask(active, hints if hinted else {}))
 
     candidates = frozenset(candidate_ids)
     rankings, abstentions = {}, {}
@@ -125,7 +132,7 @@ async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], c
     if rest and not any(weights[name] > 0 for name in rankings):
         session.notes.append("no expert with gate weight returned a ranking: " + ", ".join(s.name for s in rest)
                              + " asked after all")
-        read(rest, await asyncio.gather(*ask(rest, hints if config.skip_below is not None else {})))
+        read(rest, await asyncio.gather(*ask(rest, hints if hinted else {})))
         active += rest
     # an expert not asked for its weight 0 did not abstain: it is left out of the fusion's weights
     asked = {s.name for s in active}
