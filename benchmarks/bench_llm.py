@@ -29,6 +29,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
+from bench_server import process_cpu_s  # noqa: E402
 from results_io import record  # noqa: E402
 
 REPO = Path(__file__).resolve().parent.parent
@@ -68,7 +69,19 @@ def start_server(gguf: Path, log: Path) -> tuple[subprocess.Popen, str]:
 
 def evaluated_tokens(log: Path, since: int) -> int:
     """Prompt tokens the server evaluated (not served from its prompt cache) after byte `since`."""
-    return sum(int(m.group(1)) for m in _EVALUATED.finditer(log.read_text(errors="replace")[since:]))
+    return sum(evaluated_per_call(log, since))
+
+
+def evaluated_per_call(log: Path, since: int) -> list[int]:
+    """Prompt tokens the server evaluated for each call answered after byte `since`, in order."""
+    return [int(m.group(1)) for m in _EVALUATED.finditer(log.read_text(errors="replace")[since:])]
+
+
+def server_cpu(server: subprocess.Popen, since: float | None) -> str:
+    """The server's CPU seconds (user + system) since `since` (a `process_cpu_s` reading): what
+    the work cost the machine, which the load of other jobs inflates less than the wall time."""
+    now = process_cpu_s(server.pid)
+    return "server CPU n/a" if now is None or since is None else f"server CPU {now - since:.1f} s"
 
 
 def iesm(*args: str, env: dict[str, str]) -> tuple[subprocess.CompletedProcess, float]:
@@ -109,13 +122,16 @@ def main() -> None:
             common = ["-p", "openai-compat:gemma3", "--base-url", base, "--no-cache", "--max-concurrency", "1",
                       *(["--dialect", args.dialect] if args.dialect else [])]
             tag = f" ({args.dialect})" if args.dialect else ""
-            before = load()
+            before, cpu0 = load(), process_cpu_s(server.pid)
             proc, wall = iesm("ask", "apartment", ASK_QUERY, "--json", "--deadline", "600", *common, env=env)
             result = json.loads(proc.stdout) if proc.stdout.strip() else {"calls": []}
             failed = sum(c["failed"] for c in result["calls"])
             print(f"ask (cold, MTEFR): {wall:.1f} s, {len(result['calls'])} calls, {failed} failed, "
-                  f"{len(result.get('candidate_ids', []))} candidates; {before} -> {load()}")
+                  f"{len(result.get('candidate_ids', []))} candidates; {server_cpu(server, cpu0)}; {before} -> {load()}")
             print("  failures:", result.get("failures"))
+            for call, evaluated in zip(result["calls"], evaluated_per_call(log, 0)):
+                print(f"  {call['name']}: {call['latency_ms'] / 1000:.1f} s, prompt {call['prompt_tokens']} tokens "
+                      f"({evaluated} evaluated), reply {call['completion_tokens']} of {call['max_tokens']}")
             record("llm_ask_cold_s", wall, "s", "<= 60 s, 0 failed calls", wall <= 60 and failed == 0 and proc.returncode in (0, 1),
                    note=f"{failed} failed calls{tag}; {load()}")
             if args.ask_only:
@@ -136,7 +152,7 @@ def main() -> None:
             tokens, walls, within = {}, {}, True
             for method in ("mtefr", "spr"):
                 since = len(log.read_text(errors="replace"))
-                before = load()
+                before, cpu0 = load(), process_cpu_s(server.pid)
                 out = tmp / f"run_{method}"
                 proc, walls[method] = iesm("eval", str(suite), "-m", method, "-o", str(out), "-j", "1",
                                            "--deadline", "600", *common, env=env)
@@ -146,7 +162,8 @@ def main() -> None:
                 within &= all(calls_within_bounds(r["calls"]) for r in records)
                 tokens[method] = evaluated_tokens(log, since) / max(len(records), 1)
                 print(f"eval {method}: {walls[method]:.1f} s for {len(records)} queries, {failed} failed calls, "
-                      f"{tokens[method]:.0f} prompt tokens evaluated per query; {before} -> {load()}")
+                      f"{tokens[method]:.0f} prompt tokens evaluated per query; {server_cpu(server, cpu0)}; "
+                      f"{before} -> {load()}")
                 if method == "mtefr":
                     record("llm_eval_10_mtefr_s", walls[method], "s", "<= 300 s, 0 failed calls",
                            walls[method] <= 300 and failed == 0 and len(records) == 10, note=f"{failed} failed calls{tag}; {load()}")

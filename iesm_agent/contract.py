@@ -147,19 +147,22 @@ def _schema(kind: type[BaseModel]) -> dict[str, Any]:
 
 # the schema functions are memoised: the dicts they return are shared, never to be changed
 @functools.lru_cache(maxsize=64)
-def gate_schema(experts: tuple[str, ...] = ()) -> dict[str, Any]:
-    """JSON schema of a gate reply; with `experts` (names), every one of them gets a score and a hint
-    (which may be empty), in that order: a grammar with no optional key is a straight line
-    (llama-cpp-python sampled a gate reply with five optional hints at 0.57 tokens/s, 1.8 s a
-    token, against 41 ms for an expert's reply)."""
+def gate_schema(experts: tuple[str, ...] = (), hints: bool = True) -> dict[str, Any]:
+    """JSON schema of a gate reply; with `experts` (names), every one of them gets a score and, with
+    `hints`, a hint (which may be empty), in that order: a grammar with no optional key is a straight
+    line (llama-cpp-python sampled a gate reply with five optional hints at 0.57 tokens/s, 1.8 s a
+    token, against 41 ms for an expert's reply). Without `hints` the reply holds the scores only
+    (hints are read only when the experts get them: the cost-saving mode)."""
     schema = _schema(GateReply)
+    if not hints:
+        del schema["properties"]["hints"]
     if experts:
-        for key in ("scores", "hints"):
+        for key in schema["properties"]:
             value = schema["properties"][key].pop("additionalProperties")
             schema["properties"][key].update(properties=dict.fromkeys(experts, value), required=list(experts),
                                              additionalProperties=False)
             schema["properties"][key].pop("default", None)
-        schema["required"] = ["scores", "hints"]
+        schema["required"] = list(schema["properties"])
     return schema
 
 
@@ -212,11 +215,13 @@ def max_reply_tokens(schema: dict[str, Any]) -> int:
     return math.ceil(_max_chars(schema) * _TOKENS_PER_CHAR) + _SLACK_TOKENS
 
 
-def reply_format(task: str, kappa: int = 2) -> str:
-    """The reply format a template shows for `task` (one JSON example and its rules)."""
+def reply_format(task: str, kappa: int = 2, hints: bool = True) -> str:
+    """The reply format a template shows for `task` (one JSON example and its rules; a gate's
+    without hints when `hints` is False)."""
     if task == GATE:
-        return ('{"scores": {"<expert name>": <integer 0-%d>, ...}, "hints": {"<expert name>": '
-                '"<a few words from the query this expert should use>", ...}}' % GATE_MAX)
+        scores = '"scores": {"<expert name>": <integer 0-%d>, ...}' % GATE_MAX
+        return ('{%s, "hints": {"<expert name>": "<a few words from the query this expert should use>", ...}}'
+                % scores if hints else '{%s}' % scores)
     if task in (RANK, RANK_GEOMETRY):
         return (f'{{"{RANKING_KEY}": [<id>, <id>, ...]}}\nbest first, using only ids from the candidate list. '
                 f'Return at most {kappa} ids. To abstain:\n{{"{RANKING_KEY}": [], "{ABSTAIN_KEY}": "<why, in a few words>"}}')

@@ -29,10 +29,11 @@ def test_ask_json_on_the_shipped_map(apartment_store, env):
     for key in ("instance_id", "label", "room", "ranking", "gate", "experts", "scores", "latency_ms", "failures"):
         assert key in data
     assert data["instance_id"] == target and (data["label"], data["room"]) == ("refrigerator", "kitchen")
-    assert set(data["gate"]) == {"obj", "room", "desc", "abs", "spatial"} and data["gate"]["spatial"] == 0
+    assert set(data["gate"]) == {"obj", "room", "desc", "abs"}  # no spatial relation: spatial not asked
     assert abs(sum(data["gate"].values()) - 1) < 1e-9
     assert str(target) in data["scores"] and data["ranking"][0] == target
-    assert data["failures"] == [] and len(data["calls"]) == 6  # gate, four experts, spatial
+    assert data["failures"] == [] and len(data["calls"]) == 5  # gate, four experts
+    assert any(n.startswith("spatial: not asked") for n in data["notes"])
 
 
 def test_ask_human_output_with_explain_and_options(apartment_path, env):

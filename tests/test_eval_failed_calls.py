@@ -74,5 +74,5 @@ def test_ask_against_a_dead_endpoint_is_one_line_and_exit_2(tmp_path):
                           capture_output=True, text=True, env=env, timeout=120)
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("iesm: error: openai-compat:x: all 6 model calls failed")
+    assert len(lines) == 1 and lines[0].startswith("iesm: error: openai-compat:x: all 5 model calls failed")
     assert "is the server running" in lines[0] and "Traceback" not in proc.stderr

@@ -35,11 +35,11 @@ def test_motion_particles_are_not_relations(query, label):
 
 
 @pytest.mark.parametrize("query, label", MOTION)
-def test_spatial_expert_abstains_on_motion_phrases_and_mtefr_answers_the_named_object(retriever, query, label):
+def test_spatial_expert_is_not_asked_on_motion_phrases_and_mtefr_answers_the_named_object(retriever, query, label):
     res = retriever.ask(query)
-    assert res.experts.get("spatial", []) == []
-    assert "spatial" in res.abstained and res.gate["spatial"] == 0.0
-    assert any(note.startswith("spatial abstained") for note in res.notes)
+    assert "spatial" not in res.experts and "spatial" not in res.gate
+    assert "spatial" not in {c.name for c in res.calls}
+    assert any(note.startswith("spatial: not asked") for note in res.notes)
     assert res.label == label
 
 
@@ -123,11 +123,12 @@ def test_gerunds_after_a_preposition_are_functions_participles_after_a_noun_are_
     assert parse_query("the cup resting on the shelf").target[0] == "cup"
 
 
-def test_a_landmark_the_lexicon_does_not_know_makes_the_spatial_expert_abstain(retriever):
+def test_a_landmark_the_lexicon_does_not_know_leaves_the_spatial_expert_out(retriever):
     assert parse_query("the picture above the flurbish").unknown_landmark
     assert not parse_query("the lamp on the far left").unknown_landmark
     res = retriever.ask("the picture hanging above the flurbish")
-    assert res.experts.get("spatial", []) == [] and "spatial" in res.abstained
+    # the unknown word is read as no landmark, so no relation: the spatial expert is not asked
+    assert "spatial" not in res.experts and any(n.startswith("spatial: not asked") for n in res.notes)
 
 
 def test_landmark_colours_are_read_across_colour_suffixes():

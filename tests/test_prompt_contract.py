@@ -30,8 +30,18 @@ def test_every_retrieval_template_declares_its_task_and_reply_format(name, task)
     messages = PromptLibrary().render(name, **VARS)
     text = "\n".join(m.text() for m in messages)
     assert text.count(contract.task_line(task)) == 1 and contract.task_line(task) in text.splitlines()
-    assert contract.reply_format(task, 3) in text
+    assert contract.reply_format(task, 3, hints=False) in text  # the gate asks for hints only when told to
     assert read_prompt(messages).task == task
+
+
+def test_the_gate_asks_for_hints_only_when_the_experts_get_them():
+    plain, hinted = ("\n".join(m.text() for m in PromptLibrary().render("gate.j2", **VARS, **extra))
+                     for extra in ({}, {"hints": True}))
+    assert '"hints"' not in plain and contract.reply_format(contract.GATE, hints=True) in hinted
+    assert "hints" not in contract.gate_schema(("obj", "room"), hints=False)["properties"]
+    assert contract.gate_schema(("obj", "room"))["required"] == ["scores", "hints"]
+    assert (contract.max_reply_tokens(contract.gate_schema(("obj", "room"), hints=False))
+            < contract.max_reply_tokens(contract.gate_schema(("obj", "room"))) / 3)
 
 
 class _Recorder(Model):
@@ -63,6 +73,19 @@ def test_the_six_prompts_of_a_query_share_one_byte_identical_prefix():
         [contract.GATE] + [contract.RANK] * 4 + [contract.RANK_GEOMETRY])
     # what differs is short next to what is shared (a server's prompt cache reads the rest once)
     assert max(len(u) - len(shared) for u in users) < 0.5 * len(shared)
+    # the four experts of expert.j2 share their task, rules and reply format too: only the focus differs
+    experts = [u for u in users if contract.read_task(u[len(head):]) == contract.RANK]
+    tails = [u[len(os.path.commonprefix(experts)):] for u in experts]
+    assert os.path.commonprefix(experts).endswith("<focus>") and all(t.count("\n") <= 3 for t in tails)
+
+
+def test_a_query_without_a_spatial_relation_sends_no_geometry():
+    """The spatial expert would abstain: it is not asked, and no prompt carries the geometry."""
+    model = _Recorder()
+    res = Retriever(MapStore(open_map("apartment")), provider=model).ask("somewhere to sleep")
+    assert len(model.seen) == 5 and not res.failures and "spatial" not in res.gate
+    assert not any('"center"' in m[1].text() or "<references>" in m[1].text() for m in model.seen)
+    assert "spatial: not asked (the query states no spatial relation, comparison, order or viewpoint)" in res.notes
 
 
 def test_a_user_template_without_a_task_line_is_read_from_its_reply_format(tmp_path):

@@ -25,10 +25,11 @@ def test_same_answer_over_http_as_in_process(apartment_store):
     with LoopbackServer(OfflineModel(use_embeddings=False)) as server:
         model = get_model("openai-compat:offline", base_url=server.base_url, max_retries=2)
         remote = Retriever(apartment_store, provider=model).ask(QUERY)
-        assert server.request_count == 6  # gate + four experts + spatial
+        assert server.request_count == 5  # gate + four experts; the query states no spatial relation
     assert remote.instance_id == direct.instance_id and remote.failures == []
     assert remote.experts == direct.experts
-    assert {c.name for c in remote.calls} == {"gate", "obj", "room", "desc", "abs", "spatial"}
+    assert {c.name for c in remote.calls} == {"gate", "obj", "room", "desc", "abs"}
+    assert "spatial: not asked (the query states no spatial relation, comparison, order or viewpoint)" in remote.notes
 
 
 def test_retries_and_a_garbage_expert_reply_still_give_an_answer(apartment_store):
@@ -56,5 +57,5 @@ def test_dead_endpoint_is_recorded_not_raised(apartment_store):
     model = get_model("openai-compat:offline", base_url="http://127.0.0.1:9/v1", max_retries=0, timeout=0.5)
     result = Retriever(apartment_store, provider=model).ask(QUERY)
     assert result.instance_id is None
-    assert len(result.calls) == 6 and all(c.error for c in result.calls)
+    assert len(result.calls) == 5 and all(c.error for c in result.calls)
     assert any("gate" in f for f in result.failures)

@@ -39,7 +39,7 @@ def test_known_window_cuts_the_candidate_set_before_sending(apartment_store, fla
     assert result.failures == [] and all(c.error is None for c in result.calls)
     assert 1 <= len(result.candidate_ids) < n_all and result.candidates_before_fit == n_all
     assert result.candidate_recall is (result.target in result.candidate_ids)
-    assert server.request_count == 6 and max(r.prompt_tokens for r in server.requests) <= window - 512
+    assert server.request_count == 5 and max(r.prompt_tokens for r in server.requests) <= window - 512
     assert result.instance_id in result.candidate_ids
 
 
@@ -56,7 +56,7 @@ def test_window_learnt_from_a_refusal_reruns_the_query_cut(apartment_store):
     assert refused and all(r.prompt_tokens > window for r in refused)
     assert first.failures == [] and first.candidates_before_fit == n_all
     assert second.failures == [] and second.candidates_before_fit == n_all
-    assert server.request_count - sent_first == 6  # learnt: the second query is cut at once
+    assert server.request_count - sent_first == 5  # learnt: the second query is cut at once
     assert all(r.status == 200 for r in server.requests[sent_first:])
 
 

@@ -197,6 +197,39 @@ def test_cost_saving_mode_calls_only_heavy_experts_with_hints(store, experts_dir
     assert res.instance_id == 11 and res.hints == {"obj": "HINT-look-for-chairs"}
 
 
+class OneAtATime(FunctionModel):
+    """A scripted model that serves one call at a time (a llama-cpp-python server)."""
+
+    async def aparallel_calls(self):
+        return 1
+
+
+def test_one_call_at_a_time_asks_the_gate_first_and_skips_experts_it_gives_no_weight(store, experts_dir):
+    script = Script(gate=gate(obj=4, room=2, desc=0, abs=0), obj=ranked(10, 11), room=ranked(11, 14),
+                    desc=ranked(12), abs=ranked(13))
+    res = Retriever(store, provider=OneAtATime(script), experts_dirs=[experts_dir],
+                    method="experts:abs,desc,obj,room").ask("the red chair in the office")
+    assert [c.name for c in res.calls] == ["gate", "obj", "room"]
+    assert "not asked, gate weight 0: abs, desc" in res.notes and res.abstained == {}
+    # the fusion of every expert: those without weight had no say in it
+    both = make(store, experts_dir, script).ask("the red chair in the office")
+    assert len(both.calls) == 5 and (res.instance_id, res.ranking, res.scores) == (
+        both.instance_id, both.ranking, both.scores)
+    assert res.deciding_expert == both.deciding_expert and '"hints": {' not in script.prompts["gate"]
+
+
+def test_one_call_at_a_time_asks_the_others_when_no_weighted_expert_ranks(store, experts_dir):
+    script = Script(gate=gate(obj=4, room=0, desc=0, abs=0), obj=ranked(), room=ranked(11, 14),
+                    desc=ranked(12), abs=ProviderError("HTTP 500", "test", retryable=False))
+    res = Retriever(store, provider=OneAtATime(script), experts_dirs=[experts_dir],
+                    method="experts:abs,desc,obj,room").ask("the red chair in the office")
+    assert [c.name for c in res.calls] == ["gate", "obj", "abs", "desc", "room"]
+    assert any("asked after all" in n for n in res.notes)
+    both = make(store, experts_dir, script).ask("the red chair in the office")
+    assert (res.instance_id, res.ranking, res.abstained) == (both.instance_id, both.ranking, both.abstained)
+    assert res.instance_id == 12  # room and desc under uniform weights: a tie, broken by name (desc first)
+
+
 def test_expert_subsets(store, experts_dir):
     script = Script(gate=gate(obj=1, desc=3), obj=ranked(11), desc=ranked(10), room=ranked(12), abs=ranked(12))
     res = make(store, experts_dir, script, method="experts:obj, desc").ask("a red chair")

@@ -123,7 +123,8 @@ def test_gate_weighs_the_spatial_expert_only_for_relations(room):
     assert rel.gate["spatial"] > 0.5 and rel.instance_id == 12
     assert all(w <= rel.gate["spatial"] / 4 + 1e-9 for n, w in rel.gate.items() if n != "spatial")
     plain = r.ask("the blue chair")
-    assert plain.gate["spatial"] == 0.0 and plain.experts.get("spatial", []) == [] and plain.instance_id == 11
+    # no relation: the spatial expert is not even asked (nor weighed by the gate)
+    assert "spatial" not in plain.gate and "spatial" not in plain.experts and plain.instance_id == 11
 
 
 def test_without_the_spatial_expert_the_relation_is_lost(room):

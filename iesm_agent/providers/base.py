@@ -174,6 +174,11 @@ class Model(ABC):
         """Tokens `messages` will take (an estimate, rounded up, for `aprompt_limit`)."""
         return estimate_tokens(messages)
 
+    async def aparallel_calls(self) -> int | None:
+        """Calls this model serves at once, None when not bounded or not known (the default). With
+        1, a query's calls queue anyway, so MTEFR asks the gate first and uses its weights."""
+        return None
+
     async def aclose(self) -> None:
         """Release connections (the model stays usable and reconnects lazily); a no-op by default."""
 
@@ -198,6 +203,9 @@ class WrappedModel(Model):
 
     def estimate_tokens(self, messages: list[Message]) -> int:
         return self.inner.estimate_tokens(messages)
+
+    async def aparallel_calls(self) -> int | None:
+        return await self.inner.aparallel_calls()
 
     async def aclose(self) -> None:
         await self.inner.aclose()

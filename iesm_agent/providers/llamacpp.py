@@ -68,6 +68,10 @@ class LlamaCppModel(Model):
         reserve = options.max_tokens if options and options.max_tokens else REPLY_RESERVE_TOKENS
         return max(self.n_ctx - reserve, 0)
 
+    async def aparallel_calls(self) -> int | None:
+        """One: the model in this process answers one call at a time (its lock)."""
+        return 1
+
     def estimate_tokens(self, messages: list[Message]) -> int:
         """Exact token count of the texts by the model's tokenizer, plus the per-message overhead."""
         llama = self._load()

@@ -218,6 +218,12 @@ class OpenAICompatModel(Model):
         await self._probe_once()
         return self._limit(options)
 
+    async def aparallel_calls(self) -> int | None:
+        """Requests in flight at most: `concurrency`, or the server's slots when fewer (asked of the
+        server once)."""
+        await self._probe_once()
+        return min(self.concurrency, self.facts.slots or self.concurrency)
+
     def _limit(self, options: ChatOptions | None) -> int | None:
         """`aprompt_limit` from what is known now (no probe)."""
         if self.facts.window is None:
