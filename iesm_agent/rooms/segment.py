@@ -149,11 +149,9 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
     parent = list(range(n_rooms))  # the free component each room comes from
     if config.split and n_labels >= 2:
-        for room in range(n_rooms):
-            rows, cols = np.nonzero(room_map == room)
-            if len(rows) * cell_area < config.split_min_area:
+        for room, (size, r0, r1, c0, c1) in enumerate(_room_boxes(room_map, n_rooms)):
+            if size * cell_area < config.split_min_area:
                 continue
-            r0, r1, c0, c1 = rows.min(), rows.max() + 1, cols.min(), cols.max() + 1
             crop = room_map[r0:r1, c0:c1]
             objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
             for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config)[1:]:
@@ -167,6 +165,25 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
                             boundaries=boundaries, notes=list(boundaries.notes))
+
+
+def _room_boxes(room_map: np.ndarray, n_rooms: int) -> list[tuple[int, int, int, int, int]]:
+    """(cells, row0, row1, col0, col1) of each room 0..n_rooms-1 of `room_map` (h, w), one pass
+    over the map; (0, 0, 0, 0, 0) for a room without cells."""
+    rows, cols = np.nonzero(room_map >= 0)
+    ids = room_map[rows, cols]
+    counts = np.bincount(ids, minlength=n_rooms)
+    order = np.argsort(ids, kind="stable")
+    rows, cols = rows[order], cols[order]
+    starts = np.concatenate(([0], np.cumsum(counts)[:-1]))
+    boxes = []
+    for room in range(n_rooms):
+        if counts[room] == 0:
+            boxes.append((0, 0, 0, 0, 0))
+            continue
+        r, c = rows[starts[room]:starts[room] + counts[room]], cols[starts[room]:starts[room] + counts[room]]
+        boxes.append((int(counts[room]), int(r.min()), int(r.max()) + 1, int(c.min()), int(c.max()) + 1))
+    return boxes
 
 
 def _merge_alike_parts(room_map: np.ndarray, room_labels: np.ndarray, parent: list[int]) -> tuple[np.ndarray, np.ndarray]:
