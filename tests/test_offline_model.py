@@ -199,11 +199,11 @@ def test_each_expert_uses_its_own_evidence(model, lib):
 
 
 def test_rooms_of_one_type_are_told_apart_by_the_words_of_their_names(model, lib):
-    lamps = [{"id": 1, "label": "lamp", "room": "guest bedroom"}, {"id": 2, "label": "lamp", "room": "master bedroom"},
-             {"id": 3, "label": "lamp", "room": "study"}]
-    assert expert_rank(model, lib, "room", "the lamp in the master bedroom", kappa=1, cands=lamps) == [2]
-    assert expert_rank(model, lib, "room", "the lamp in the guest bedroom", kappa=1, cands=lamps) == [1]
-    assert set(expert_rank(model, lib, "room", "the lamp in the bedroom", kappa=2, cands=lamps)) == {1, 2}
+    clocks = [{"id": 1, "label": "clock", "room": "spare room"}, {"id": 2, "label": "clock", "room": "kids room"},
+              {"id": 3, "label": "clock", "room": "study"}]
+    assert expert_rank(model, lib, "room", "a clock in the kids room", kappa=1, cands=clocks) == [2]
+    assert expert_rank(model, lib, "room", "a clock in the spare room", kappa=1, cands=clocks) == [1]
+    assert set(expert_rank(model, lib, "room", "a clock in a bedroom", kappa=2, cands=clocks)) == {1, 2}
 
 
 def test_ranking_respects_kappa_and_ties_break_by_lower_id(model, lib):

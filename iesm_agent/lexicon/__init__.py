@@ -166,7 +166,7 @@ class Lexicon:
     # -- phrases ----------------------------------------------------------------------------
     def scan(self, lemmas: list[str], breaks: frozenset[int] = frozenset()) -> list[Span]:
         """Greedy longest-match of lexicon phrases over `lemmas`, left to right; no phrase
-        spans a break (a token index in `breaks` starts a new clause: "the window. The door").
+        spans a break (a token index in `breaks` starts a new clause: "the piano. The stool").
 
         A shade followed by a colour ("light blue") is one colour span."""
         spans: list[Span] = []

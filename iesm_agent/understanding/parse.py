@@ -23,7 +23,7 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
-#: nouns that stand for an object the sentence goes on to name ("the object is a lamp")
+#: nouns that stand for an object the sentence goes on to name ("the thing is a kettle")
 _PLACEHOLDERS = frozenset({"object", "thing", "item"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
@@ -84,7 +84,7 @@ class Structure:
     request: tuple[int, int]
     context: tuple[tuple[int, int], ...]
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
-    excluded: tuple[int, int] | None = None  # a leading "Not the red one:" that rules out, as a character range
+    excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
 
     def modified_noun(self, offset: int) -> int | None:
         """Index of the noun that the word at character `offset` modifies (as an adjective,
@@ -134,14 +134,14 @@ def normalise(text: str) -> str:
     return text
 
 
-#: a leading clause that rules out before the request ("Not the red one: the blue mug"), to its punctuation
+#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
 
 
 @lru_cache(maxsize=4096)
 def parse_request(text: str) -> Structure:
     """The structure of `text` (a request of one or more sentences); a leading clause that only
-    rules out ("Not the one on the desk: the mug on the table") is left out of the parse and
+    rules out ("Not the one on the piano: the vase on the sill") is left out of the parse and
     marked `excluded`."""
     fronted = _FRONTED_EXCLUSION.match(text)
     if fronted is None or not any(c.isalpha() for c in text[fronted.end():]):
@@ -225,35 +225,34 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     first = next((t for t in sent if not t.is_punct and not t.is_space), root)
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
-        return "continuation", None  # "Not on the floor.": rules out, says nothing new about the target
+        return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     command = _command(doc, sent)
-    if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the window. The door is ..."
+    if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
         found = command[1]
         shown = next((c.i for c in doc[found].children if c.dep_ == "appos" and c.pos_ in _NOUNS), None) \
             if found is not None else None
         return ("request", shown) if shown is not None else ("viewpoint", found)
-    if command is not None and command[1] is not None:  # "it's dark, so take me to a lamp"
+    if command is not None and command[1] is not None:  # "it's chilly, so lead me to a quilt"
         return "request", command[1]
-    if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and not _names_after_copula(root):
+    named = _copula_attribute(root)  # "this is a kettle", "it's on the shelf and is the jar ..."
+    if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and named is None:
         return "continuation", None
     if command is not None:
         return "request", None
     if root.pos_ not in ("VERB", "AUX") and subject is None:
-        return "request", _telegraphic_target(root)  # a bare noun phrase: "the lamp on the left", "something to sit on"
+        return "request", _telegraphic_target(root)  # a bare noun phrase: "the kettle on the left", "somewhere to perch"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and subject.lower_ in _PERSONAL:
-        # "I'm at the foot of the bed, and I want ...": where the speaker is, not where to go
+        # "I'm by the piano and I want ...": where the speaker is, not where to go
         found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
         if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
                                   or doc[found].head.lemma_ in _ACTIVITY_VERBS):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
         return ("request" if question else "personal"), found
     if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
-        named = _copula_attribute(root)
         return ("request" if question else "description"), named if named is not None else _attribute_of(doc, root)
-    if subject is not None and subject.lower_ in _PLACEHOLDERS and _names_after_copula(root):
-        attribute = next(c.i for c in root.children if c.dep_ == "attr" and c.pos_ in _NOUNS)
-        return ("request" if question else "description"), attribute  # "the object is a lamp"
+    if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:
+        return ("request" if question else "description"), named  # "the thing is a kettle"
     if subject is not None and _noun_of(subject) is not None:
         return ("request" if question else "description"), _noun_of(subject)
     found = _object_of(doc, root)
@@ -265,7 +264,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
 
 def _noun_of(token) -> int | None:
     """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
-    the parse puts where a noun goes but tags otherwise ("the trash can is", "the mug closest to"),
+    the parse puts where a noun goes but tags otherwise ("the paint can is", "the kettle nearest to"),
     the noun compounded with it; else None."""
     if token.pos_ in _NOUNS:
         return token.i
@@ -277,7 +276,7 @@ def _noun_of(token) -> int | None:
 
 def _telegraphic_target(root) -> int:
     """The head of a bare noun phrase, or in a telegraphic one whose superlative the parser took
-    for a modifier ("lamp nearest window"), the noun before the superlative."""
+    for a modifier ("stool nearest fridge"), the noun before the superlative."""
     lefts = list(root.lefts)
     for k, word in enumerate(lefts):
         if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in _NOUNS:
@@ -286,15 +285,10 @@ def _telegraphic_target(root) -> int:
 
 
 def _copula_attribute(root) -> int | None:
-    """The noun a copula names ("this is a chair", "it's on the bed and is the pillow on the
+    """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
     left": the copula or one joined to it), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                  for c in verb.children if c.dep_ == "attr" and c.pos_ in _NOUNS), None)
-
-
-def _names_after_copula(root) -> bool:
-    """True for "this is a chair" / "it is a wooden table": a copula whose attribute is a noun."""
-    return _copula_attribute(root) is not None
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
@@ -306,7 +300,7 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
         if _misread_verb(t):
             commands.append(t)
         if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep") \
-                or t.lemma_ == "be":  # "there are pillows on it" states, it does not ask
+                or t.lemma_ == "be":  # "there are magazines on it" states, it does not ask
             continue
         subjects = [c for c in t.children if c.dep_ in ("nsubj", "nsubjpass")]
         if any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children):
@@ -326,7 +320,7 @@ def _misread_verb(token) -> bool:
     return (token.pos_ in _NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
             and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS
                     and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
-                    for c in token.children))  # "Head (over) to", not "Table nearest to"
+                    for c in token.children))  # "Head (over) to", not "Stool nearest to"
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
@@ -334,7 +328,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
     dust the frame", "you should pick the footstool"); with `clauses_only`, only the latter."""
     for child in () if clauses_only else verb.children:
-        if child.lower_ == "way":  # "make your way to the chair": the way is how, the chair is where
+        if child.lower_ == "way":  # "make your way to the ottoman": the way is how, the ottoman is where
             found = _object_of(doc, child)
             if found is not None:
                 return found

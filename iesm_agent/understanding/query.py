@@ -212,7 +212,7 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     owner = structure.words[noun]
     if owner.dep == "attr" or owner.start in described:  # "in brown leather": the material is the target's
         return False
-    if owner.dep == "appos" and owner.head == target.word:  # "desk light, green shade": a part of the target
+    if owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of the target
         return False
     via = structure.words[owner.head]
     if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
@@ -251,7 +251,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
     ruled_out = []
-    if structure.excluded is not None:  # "Not the red one: ..."
+    if structure.excluded is not None:  # "Not the green kettle: ..."
         ruled_out.append(analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:])))
     if marker is not None:
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
@@ -320,12 +320,12 @@ def analyse_query(text: str) -> QueryInfo:
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     fronted = reading.ruled_out[0] if reading.structure.excluded is not None else None
     if not _named(info) and fronted is not None and fronted.named and not info.afford:
-        # "Not the big grey couch, the small leather one": one of the kind the exclusion named
+        # "Not the tall oak wardrobe, the short pine one": one of the kind the exclusion named
         info.targets.update({c: 1.0 for c, w in fronted.targets.items() if w >= 1.0})
         info.target_phrase = info.target_phrase or fronted.target_phrase
     _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
-    info.excluded_targets -= {c for c, w in info.targets.items() if w >= 1.0}  # "not the plain orange one:
-    info.excluded_attrs -= set(info.attrs)                                     # the striped orange pillow"
+    info.excluded_targets -= {c for c, w in info.targets.items() if w >= 1.0}  # "not the plain blue rug:
+    info.excluded_attrs -= set(info.attrs)                                     # the striped blue one"
     return QueryInfo(**vars(info))
 
 

@@ -42,7 +42,7 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
-#: parse relations of a word that heads a relation's object ("on a glass [table]")
+#: parse relations of a word that heads a relation's object ("on the piano [bench]")
 _PHRASE_HEADS = frozenset({"pobj", "dobj", "conj", "attr", "npadvmod"})
 #: relations that say nothing without a landmark
 _NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
@@ -116,6 +116,10 @@ class _Reader:
         self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
+        self.span_of: dict[int, int | None] = {}  # parsed word -> start of the category span of its first token
+        for i, word in enumerate(self.words):
+            if word is not None and word not in self.span_of:
+                self.span_of[word] = next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
         self.target_at = self.parsed_target()
         if self.target_at is not None:
             self.used.add(self.target_at)
@@ -127,8 +131,7 @@ class _Reader:
 
     def span_at(self, word: int | None) -> int | None:
         """Start of the category span that holds the parsed `word`, or None."""
-        k = next((i for i, w in enumerate(self.words) if w == word), None) if word is not None else None
-        return next((s for s, span in self.cat_at.items() if span.start <= k < span.end), None) if k is not None else None
+        return self.span_of.get(word) if word is not None else None
 
     def parsed_target(self) -> int | None:
         """Start of the category span of the target noun the parse names; else of the first span
@@ -139,17 +142,8 @@ class _Reader:
         named = {c for c, w in analyse_query(self.text).targets.items() if w >= 1.0}
         return next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
 
-    def in_cue_object(self, j: int) -> bool:
-        """True when the category span at `j` lies in what the current cue governs ("the middle of
-        [the room]", "the right side of [the table]"), or the parse gives the cue no noun at all."""
-        below = self.cue_object()
-        if below is None:
-            return True
-        span = self.cat_at[j]
-        return any(w in below for w in self.words[span.start:span.end])
-
     def cue_object(self) -> set[int] | None:
-        """Parsed words the current cue governs ("the right side of [the table]": through the noun
+        """Parsed words the current cue governs ("the far side of [the piano]": through the noun
         the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
         cue, st = self.cue_word, self.structure
         if cue is None:
@@ -160,7 +154,7 @@ class _Reader:
 
     def points_back(self, word: int) -> bool:
         """True when the parsed `word` stands for the target: a pronoun ("its left", "behind it")
-        or the target's kind named again ("to the left of the file cabinet")."""
+        or the target's kind named again ("to the left of the piano", said of the piano)."""
         if self.structure.words[word].text.lower() in BACK_REFERENCES | {"its"}:
             return True
         j = self.span_at(word)
@@ -181,19 +175,19 @@ class _Reader:
 
     def side_of(self) -> bool:
         """True when the side word being read names a side of a landmark: the noun it stands for
-        has an "of" ("the right side of the table", "the left end of a desk")."""
+        has an "of" ("the right side of the piano", "the left end of a workbench")."""
         k, st = self.cue_noun(), self.structure
         of = next((n for n, w in enumerate(st.words) if w.head == k and w.dep == "prep" and w.text.lower() == "of"), None)
         if of is None:
             return False
-        owner = self.span_at(k)  # "the left chair of the two chairs": which of them, not a landmark
+        owner = self.span_at(k)  # "the left stool of the three stools": which of them, not a landmark
         objects = [self.span_at(n) for n, w in enumerate(st.words) if w.head == of and w.dep == "pobj"]
         return owner is None or not any(j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
                                         for j in objects)
 
     def located_by_pronoun(self) -> int | None:
         """Start of the category span of what the current cue places relative to the target when
-        its object only points back ("there is a trash can [to its left]", "it has a lamp [behind
+        its object only points back ("there is a hamper [to its left]", "it has a fern [behind
         it]"): the noun the phrase hangs on, or the subject or object of its verb; else None."""
         below, st = self.cue_object(), self.structure
         if below is None or not any(self.points_back(k) for k in below) \
@@ -224,17 +218,22 @@ class _Reader:
 
     def next_cat(self, pos: int) -> int | None:
         """Start of the first free category span from `pos` within what the current cue governs;
-        of those, the one that heads the cue's object ("on a glass [table]": not the glass)."""
+        of those, the one that heads the cue's object ("on the piano [bench]": not the piano)."""
+        below = self.cue_object()  # None: the parse gives the cue no noun, any span may serve
         found = [j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
-                 and self.in_cue_object(j)]
-        if len(found) > 1 and self.cue_object() is not None:
+                 and (below is None or below & set(self._span_words(j)))]
+        if len(found) > 1 and below is not None:
             objects = self.cue_objects()
-            found = [j for j in found if objects & set(self.words[self.cat_at[j].start:self.cat_at[j].end])] + found
+            found = [j for j in found if objects & set(self._span_words(j))] + found
         return found[0] if found else None
+
+    def _span_words(self, j: int) -> list[int | None]:
+        """Parsed words of the tokens of the category span at `j`."""
+        return self.words[self.cat_at[j].start:self.cat_at[j].end]
 
     def cue_objects(self) -> set[int]:
         """Parsed words that are the current cue's own objects: its noun objects, those of its
-        prepositions ("closest [to] the door", "the right side [of] the table") and their conjuncts."""
+        prepositions ("nearest [to] the fireplace", "the far side [of] the piano") and their conjuncts."""
         st = self.structure
         owners = {self.cue_word, self.cue_noun()}
         owners |= {k for k, w in enumerate(st.words) if w.head in owners and w.dep == "prep" and k not in owners}
@@ -258,7 +257,7 @@ class _Reader:
         i, negated = 0, set()  # indices of relations that follow a negation word
         toks, out = self.toks, self.out
         while i < len(self.lemmas):
-            if i and self.words[i - 1] is None and self.words[i] is not None:  # past "Not the red one:"
+            if i and self.words[i - 1] is None and self.words[i] is not None:  # past "Not the green kettle:"
                 negated = {k for k in negated if k < len(out.relations)}
             if toks[i] in _NEGATIONS:
                 negated.add(len(out.relations))
@@ -364,7 +363,7 @@ class _Reader:
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
-        category itself, not a part of one ("at the end of the table") or a place looked at."""
+        category itself, not a part of one ("at one end of the workbench") or a place looked at."""
         st = self.structure
         if at is None or st.words[st.words[at].head].text.lower() in _LOOKING:
             return False
@@ -372,7 +371,7 @@ class _Reader:
 
     def inverse_by_pronoun(self, kind: str) -> bool:
         """Read the relation seen from the target when the cue places another thing relative to it
-        ("a trash can to its left", "a box of tissues on the cabinet"); False when it does not."""
+        ("there is a hamper to its left", "a fruit bowl sits on the sideboard"); False when it does not."""
         located = self.located_by_pronoun() if kind in INVERSE_RELATION else None
         if located is None:
             return False
@@ -388,7 +387,7 @@ class _Reader:
         if kind in ("left", "right", "front", "behind"):
             owner = self.span_at(self.cue_noun())
             if owner is not None and owner != self.target_at and self.target_at is not None and not self.side_of():
-                # "on the left nightstand": which of the landmark's instances, not the target's side
+                # "on the left bench": which of the landmark's instances, not the target's side
                 described = next((r for r in out.relations if owner in self.taken.get(id(r), ())), None)
                 if described is not None and not described.landmark_where:
                     described.landmark_where = kind

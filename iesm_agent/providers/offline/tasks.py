@@ -324,7 +324,9 @@ def _components(lex, q: QueryInfo, r: Record, memo: dict) -> tuple[float, ...]:
     room = memo.get(key)
     if room is None:
         room = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items() if r.room is not None), default=0.0)
-        asked = frozenset(lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha())
+        asked = memo.get(("asked room",))
+        if asked is None:  # the words the request names its room with, once per query
+            asked = memo[("asked room",)] = frozenset(lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha())
         if room and asked and not asked <= r.room_words:  # "the master bedroom": not the guest bedroom
             room *= _OTHER_NAMED_ROOM
         memo[key] = room
