@@ -325,6 +325,8 @@ class _Reader:
         side_noun = nxt in ("left", "right") and self.span_at(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
+        if kind != "facing" and len(words) == 1 and self.said_by_someone(i - 1):
+            return i  # "the mug I left there": a verb with its subject, not a relation
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
             out.relations.append(Relation("wall"))
             return i + 1
@@ -360,6 +362,15 @@ class _Reader:
         if self.landmark(self.pending_ordinal, i):
             self.pending_ordinal.value = "landmark"
         return i
+
+    def said_by_someone(self, i: int) -> bool:
+        """True when the parse reads token `i` as a verb with a pronoun subject ("I left it",
+        "the minutes we have left"), not a cue word the tagger merely calls a verb ("facing the
+        door, left bin")."""
+        at = self.words[i]
+        if at is None or self.structure.words[at].pos not in ("VERB", "AUX"):
+            return False
+        return any(w.head == at and w.dep == "nsubj" and w.pos == "PRON" for w in self.structure.words)
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
