@@ -35,7 +35,7 @@ class QueryInfo:
     afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
     kin: dict[str, float] = field(default_factory=dict)       # kinds that serve the named kind's purpose
     abstract: bool = False                                    # "something", "a place to ..."
-    #: the function is said by a verb or a phrase ("to sit", "turn the volume up"), a class noun
+    #: the function is said by a verb or a phrase ("to sit", "turn the heating down"), a class noun
     #: ("seating"), a cue naming the target ("a seat"), an abstract target ("something for
     #: storage") or the context, not only by a noun modifying the target ("the gold cover")
     purpose: bool = False
@@ -304,7 +304,7 @@ def analyse_query(text: str) -> QueryInfo:
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
     for positions, idx in lex.gapped_cues(reading.lemmas):
-        info.purpose = info.purpose or len(positions) > 1  # "turn the volume up": a phrase says what to do
+        info.purpose = info.purpose or len(positions) > 1  # "turn the heating down": a phrase says what to do
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)

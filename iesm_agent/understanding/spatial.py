@@ -365,7 +365,7 @@ class _Reader:
 
     def said_by_someone(self, i: int) -> bool:
         """True when the parse reads token `i` as a verb with a pronoun subject ("I left it",
-        "the minutes we have left"), not a cue word the tagger merely calls a verb ("facing the
+        "the biscuits we have left"), not a cue word the tagger merely calls a verb ("facing the
         door, left bin")."""
         at = self.words[i]
         if at is None or self.structure.words[at].pos not in ("VERB", "AUX"):
