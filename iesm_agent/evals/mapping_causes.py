@@ -46,6 +46,29 @@ def mask_objects(frames: FrameSet, min_pixels: int) -> dict[tuple[int, int], int
     return out
 
 
+def mask_attribution(observations: np.ndarray, shows: dict[tuple[int, int], int]
+                     ) -> tuple[dict[int, Counter], dict[int, int]]:
+    """(object -> Counter of the instances its masks went to, instance -> its main object: the object
+    most of its masks show, ties to the lower id), from the map's `observations` (M, >= 3) rows
+    [instance id, frame, mask, ...] and `shows` (`mask_objects`); masks `shows` lacks are left out."""
+    went: dict[int, Counter] = {}
+    holds: dict[int, Counter] = {}
+    for inst, frame, mask in np.asarray(observations, np.float64)[:, :3].astype(np.int64).tolist():
+        obj = shows.get((frame, mask))
+        if obj is not None:
+            went.setdefault(obj, Counter())[inst] += 1
+            holds.setdefault(inst, Counter())[obj] += 1
+    return went, {inst: min(c.items(), key=lambda kv: (-kv[1], kv[0]))[0] for inst, c in holds.items()}
+
+
+def own_instances(obj: int, went: dict[int, Counter], main: dict[int, int]) -> list[int]:
+    """The object's own instances (whose main object it is), most of its masks first (ties: lower
+    id); [] when it has none or when most of its masks went into other objects' instances."""
+    masks = went.get(obj, Counter())
+    own = sorted((inst for inst in masks if main.get(inst) == obj), key=lambda inst: (-masks[inst], inst))
+    return own if sum(masks[inst] for inst in own) * 2 >= sum(masks.values()) > 0 else []
+
+
 def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[np.ndarray, np.ndarray],
                      gt_ids: np.ndarray, matched: set[int], observations: np.ndarray,
                      shows: dict[tuple[int, int], int]) -> dict[int, str]:
@@ -53,14 +76,7 @@ def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[
     id) entry arrays in one grid: `pred_cells` the map's instances, `gt_cells` the observed
     ground-truth footprints; `observations` (M, >= 3) the map's rows [instance id, frame, mask,
     ...]; `shows` the object each frame mask mostly shows (`mask_objects`)."""
-    went: dict[int, Counter] = {}          # object -> Counter of instances its masks went to
-    holds: dict[int, Counter] = {}         # instance -> Counter of objects its masks show
-    for inst, frame, mask in np.asarray(observations, np.float64)[:, :3].astype(np.int64).tolist():
-        obj = shows.get((frame, mask))
-        if obj is not None:
-            went.setdefault(obj, Counter())[inst] += 1
-            holds.setdefault(inst, Counter())[obj] += 1
-    main = {inst: min(c.items(), key=lambda kv: (-kv[1], kv[0]))[0] for inst, c in holds.items()}
+    went, main = mask_attribution(observations, shows)
     gflat, gid = gt_cells
     g, p, inter = intersections(gflat, gid, *pred_cells)
     gt_area = np.bincount(gid, minlength=int(gid.max(initial=0)) + 1)
@@ -68,12 +84,11 @@ def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[
     for i in gt_ids.tolist():
         if i in matched:
             continue
-        masks = went.get(i)
-        if not masks:
+        if not went.get(i):
             out[i] = "never segmented"
             continue
-        own = [inst for inst in masks if main.get(inst) == i]
-        if sum(masks[inst] for inst in own) * 2 < sum(masks.values()):
+        own = own_instances(i, went, main)
+        if not own:
             out[i] = "swallowed"
             continue
         sel = (g == i) & np.isin(p, own)
