@@ -239,7 +239,7 @@ def test_an_inflated_instance_still_holds_its_object(tiny, tmp_path):
     masks show that object; an object whose masks all went into another's instance is not."""
     import shutil
 
-    from iesm_agent.evals.gt_queries import built_instances
+    from iesm_agent.evals.mapping_causes import built_instances
     from iesm_agent.evals.observed import observed_masks
 
     frames = tmp_path / "frames"
@@ -264,6 +264,18 @@ def test_an_inflated_instance_still_holds_its_object(tiny, tmp_path):
     instances, matched = built_instances(inflated, gt, frames, observed)
     assert 2 not in matched and instances[2] == [cup]
     assert instances[1] == [by_label["table"]] and 1 in matched
+    # a second piece of the cup, holding two of its views: both pieces are the cup, the paired one first
+    piece = scene.instance(cup).model_copy(update={"id": 99})
+    obs = scene.observations.copy()
+    cup_rows = np.flatnonzero(obs[:, 0] == cup)
+    obs[cup_rows[:2], 0] = 99
+    split = scene.model_copy(update={
+        "instances": [*scene.instances, piece], "observations": obs,
+        "embeddings": np.vstack([scene.embeddings, scene.embeddings[[scene.instances.index(scene.instance(cup))]]]),
+        "occupancy": InstanceGrid.from_entries(np.r_[flat, flat[ids == cup][:1]], np.r_[ids, [99]],
+                                               np.r_[top, [0.87]])})
+    instances, matched = built_instances(split, gt, frames, observed)
+    assert 2 in matched and instances[2] == [cup, 99]
     # the cup's observations moved to the table's instance: the map holds no cup of its own
     obs = inflated.observations.copy()
     obs[obs[:, 0] == cup, 0] = by_label["table"]

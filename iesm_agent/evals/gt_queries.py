@@ -5,11 +5,12 @@ Queries are generated from the objects of gt/objects.json that the frames show (
 memory as an object-list map so the built map's own labels never leak into the queries. Each
 query's target and accepted ids are translated to built-map ids (`built_instances`): the instance
 `match_instances` pairs the object with (observed footprints, top-down IoU > 0.5, as the mapping
-table), else, for a map built from these frames, the object's own instances (those most of whose
+table) and, for a map built from these frames, the object's own instances (those most of whose
 masks show it, holding at least half of its masks; `evals.mapping_causes`) that no other object is
-paired with: the map holds the object, its footprint is only too large, too small or in pieces for
-IoU > 0.5. A query whose target has neither (the object never reached the map or went into other
-objects' instances) is dropped; accepted ids without either are left out. Each query gets a
+paired with: the map holds the object even when its footprint is too large, too small or in pieces
+for IoU > 0.5, and each of its pieces is the object. A query whose target has neither (the object
+never reached the map or went into other objects' instances) is dropped; accepted ids without
+either are left out. Each query gets a
 seeded random robot start (x, y) in metres on free ground-truth floor, so `iesm eval` can report
 N-SR on the map.
 """
@@ -24,18 +25,14 @@ from typing import NamedTuple, Optional, Sequence
 
 import numpy as np
 
-from ..config import MappingConfig
-from ..frames import FrameSet
 from .generate import GenerationResult, generate_suite
-from .mapping_causes import mask_attribution, mask_objects, own_instances
+from .mapping_causes import built_instances
 from .observed import observed_masks
 from .suite import SuiteQuery, write_suite
 from ..sim.ground_truth import GroundTruth
 from ..store import open_map
 from ..store.importers.objects import ObjectSpec
-from ..store.model import SceneMap
 from ..store.refs import resolve_map_path
-from .matching import match_instances
 
 
 #: a start keeps at least this much free floor around it, metres
@@ -63,27 +60,6 @@ class TargetCounts(NamedTuple):
     matched: int
     own: int
     dropped: int
-
-
-def built_instances(scene: SceneMap, gt: GroundTruth, frames_dir: str | Path,
-                    observed: tuple[np.ndarray, np.ndarray, np.ndarray] | None) -> tuple[dict[int, list[int]], set[int]]:
-    """({gt id: built ids, the one to name first}, gt ids paired by IoU): the `match_instances`
-    pair, else the object's own instances (`mapping_causes.own_instances`, most of its masks first)
-    paired with no other object. Own instances need the map's observations and the frames' masks
-    and instance images (seg.npz, inst.png); without them only IoU pairs count."""
-    matches = match_instances(scene, gt, observed=observed)
-    out = {g: [p] for g, p in matches.items()}
-    if scene.observations is None or not len(scene.observations):
-        return out, set(matches)
-    frames = FrameSet.open(frames_dir)
-    went, main = mask_attribution(scene.observations, mask_objects(frames, MappingConfig().min_mask_pixels))
-    paired = set(matches.values())
-    for obj in went:
-        if obj not in matches:
-            own = [inst for inst in own_instances(obj, went, main) if inst not in paired]
-            if own:
-                out[obj] = own
-    return out, set(matches)
 
 
 def translate(queries: Sequence[SuiteQuery], instances: dict[int, Sequence[int]], map_ref: str,

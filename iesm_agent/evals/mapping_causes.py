@@ -13,16 +13,23 @@ instance is the object's own when that is the object. Causes, tested in this ord
 * "inflated": an own instance covers at least `COVER` of it, yet the IoU stays at or under the
   match threshold: the footprint spread beyond what was seen;
 * "partial": what remains: its own instances cover under `COVER` of it (misplaced or thin).
+
+`built_instances` gives the instances that hold an object for queries and navigation: its IoU pair
+and its own instances, which hold it even when too large, too small or in pieces for IoU > 0.5.
 """
 
 from __future__ import annotations
 
 from collections import Counter
+from pathlib import Path
 
 import numpy as np
 
+from ..config import MappingConfig
 from ..frames import FrameSet
+from ..store.model import SceneMap
 from ..mapping.cells import intersections
+from .matching import match_instances
 
 #: share of an object's observed cells an own instance must cover to explain it
 COVER = 0.5
@@ -67,6 +74,28 @@ def own_instances(obj: int, went: dict[int, Counter], main: dict[int, int]) -> l
     masks = went.get(obj, Counter())
     own = sorted((inst for inst in masks if main.get(inst) == obj), key=lambda inst: (-masks[inst], inst))
     return own if sum(masks[inst] for inst in own) * 2 >= sum(masks.values()) > 0 else []
+
+
+def built_instances(scene: SceneMap, gt, frames_dir: str | Path,
+                    observed: tuple[np.ndarray, np.ndarray, np.ndarray] | None) -> tuple[dict[int, list[int]], set[int]]:
+    """({gt id: built ids, the one to name first}, gt ids paired by IoU): the `match_instances`
+    pair first, then the object's own instances (`own_instances`, most of its masks first) paired
+    with no other object: the pieces of a split object are all of it. `gt` is a `GroundTruth`,
+    `observed` the observed footprints of `frames_dir`'s objects (`evals.observed.observed_masks`).
+    Own instances need those, the map's observations and the frames' masks (seg.npz); without
+    them only IoU pairs count."""
+    matches = match_instances(scene, gt, observed=observed)
+    out = {g: [p] for g, p in matches.items()}
+    if observed is None or scene.observations is None or not len(scene.observations):
+        return out, set(matches)
+    shows = mask_objects(FrameSet.open(frames_dir), MappingConfig().min_mask_pixels)
+    went, main = mask_attribution(scene.observations, shows)
+    paired = set(matches.values())
+    for obj in went:
+        pieces = out.get(obj, []) + [inst for inst in own_instances(obj, went, main) if inst not in paired]
+        if pieces:
+            out[obj] = pieces
+    return out, set(matches)
 
 
 def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[np.ndarray, np.ndarray],
