@@ -137,3 +137,12 @@ def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
     assert "bottle" in info.targets and "kettle" in info.excluded_targets and "kettle" not in info.targets
     structure = parse_request("Not the kettle on the hob, the jug on the windowsill.")
     assert structure.excluded == (0, len("Not the kettle on the hob, "))
+
+
+@pytest.mark.parametrize("text, kind", [
+    ("In the study there are red cushions lying by the lamps. Go to one of them.", "pillow"),
+    ("Which plates are on the kitchen shelves? Bring me to one of them.", "plate"),
+])
+def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text, kind):
+    q = analyse_query(text)
+    assert q.targets.get(kind) == 1.0

@@ -375,12 +375,14 @@ def _antecedent(doc, index: int) -> int:
     named before it as subject or object ("which vase holds tulips? take me to it"); the word
     itself when there is none."""
     of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
-    named = next((g.i for g in of.children if g.dep_ == "pobj" and g.pos_ in NOUNS), None) if of else None
-    if named is not None:  # "one of the seats"
-        return named
+    named = next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
+                 None) if of else None
+    if named is not None:  # "one of the seats"; "one of them": what "them" stands for
+        return _antecedent(doc, named) if doc[named].lower_ == "them" else named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
-        return next((t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")),
-                    index)
+        named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")]
+        plural = [k for k in named if doc[k].tag_ in ("NNS", "NNPS")]  # "them": a plural noun when there is one
+        return (plural if doc[index].lower_ == "them" and plural else named or [index])[0]
     if doc[index].lower_ not in ("one", "ones"):
         return index
     return next((t.i for t in reversed(doc[:index]) if t.tag_ in ("NNS", "NNPS")), index)
