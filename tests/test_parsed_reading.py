@@ -97,6 +97,16 @@ def test_misspelt_nouns_are_corrected_before_parsing():
     assert _target("the wardorbe next to the bed") == "wardrobe"
 
 
+@pytest.mark.parametrize("typed, meant", [("lmp", "lamp"), ("rgu", "rug"), ("bde", "bed")])
+def test_a_three_letter_noun_with_a_dropped_or_swapped_letter_is_corrected(typed, meant):
+    assert load_lexicon().correct(typed) == meant
+
+
+@pytest.mark.parametrize("word", ["tea", "bin", "pic", "btw", "bbq"])
+def test_short_words_and_abbreviations_are_left_alone(word):
+    assert load_lexicon().correct(word) == word
+
+
 @pytest.mark.parametrize("text, room", [("how do I get out of the garage", "garage"),
                                         ("I'd like to leave the bathroom now", "bathroom"),
                                         ("show me the way out of the bedroom", "bedroom")])

@@ -109,18 +109,27 @@ class Lexicon:
         """`token`, or the lexicon word it misspells:
         one edit away (insertion, deletion, substitution or transposition of neighbours) for words of
         4 to 6 letters, two for longer ones (keeping the first letter), the closest when it is
-        unique, preferring words with the same first letter. Known words, English
-        words (`english_words.txt`) and short or non-alphabetic tokens are never changed."""
-        if len(token) < 4 or not token.isalpha() or token in self.vocab or token in self.lemmas \
+        unique, preferring words with the same first letter; a three-letter word only for a dropped
+        or swapped letter. Known words, English words (`english_words.txt`) and shorter or
+        non-alphabetic tokens are never changed."""
+        if len(token) < 3 or not token.isalpha() or token in self.vocab or token in self.lemmas \
                 or token in _english() or self.lemma(token) in self.vocab:
             return token
         hit = self._correction_cache.get(token)
         if hit is not None:
             return hit
-        best = self.closest(token, self._spelling_targets)
+        best = self._short_fix(token) if len(token) == 3 else self.closest(token, self._spelling_targets)
         if len(self._correction_cache) < 100_000:
             self._correction_cache[token] = best
         return best
+
+    def _short_fix(self, token: str) -> str:
+        """The one lexicon word a three-letter non-word stands for with a letter dropped ("bok":
+        book) or two neighbours swapped ("mgu": mug); `token` when there is not exactly one."""
+        swapped = {token[:i] + token[i + 1] + token[i] + token[i + 2:] for i in range(len(token) - 1)}
+        found = {w for w in self._spelling_targets
+                 if w in swapped or (len(w) == 4 and any(w[:i] + w[i + 1:] == token for i in range(4)))}
+        return found.pop() if len(found) == 1 else token
 
     def closest(self, token: str, words: frozenset[str]) -> str:
         """The word of `words` that `token` misspells by the rules of `correct`, or `token`."""
