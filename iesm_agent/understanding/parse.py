@@ -157,10 +157,11 @@ def parse_request(text: str) -> Structure:
 
 def parse_many(texts: list[str]) -> None:
     """Memoise `parse_request` of each of `texts`, parsed together (`nlp.pipe`: about a third of
-    the CPU per sentence of parsing one at a time; the same parse, checked on every suite text)."""
+    the CPU per sentence of parsing one at a time; the same parse on every suite text,
+    `scripts/check_parse_batching.py`)."""
     todo = [t for t in dict.fromkeys(texts) if not _FRONTED_EXCLUSION.match(t)]
-    _batch.update(zip(todo, _pipeline().pipe(todo)))
     try:
+        _batch.update(zip(todo, _pipeline().pipe(todo)))
         for text in texts:
             parse_request(text)
     finally:
