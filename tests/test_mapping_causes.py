@@ -40,3 +40,18 @@ def test_an_instance_belongs_to_the_object_most_of_its_masks_show():
     obs = np.array([[9, 0, 0, 1, 1], [9, 1, 0, 1, 1], [9, 2, 0, 1, 1]], np.float64)
     # object 1 owns instance 9 (two masks of three), which is too large: inflated; object 2 swallowed
     assert unmatched_causes(pred, gt, np.array([1, 2]), set(), obs, shows) == {1: "inflated", 2: "swallowed"}
+
+
+def test_stacked_groups_count_ours_and_the_baselines_names():
+    from types import SimpleNamespace
+
+    from iesm_agent.evals.studies.mapping_causes import stacked_groups
+
+    ctx = SimpleNamespace(stacked={3, 4, 5, 6})
+    groups = stacked_groups(ctx, right={3: True, 4: False, 9: True}, causes={5: "inflated", 6: "partial"},
+                            baseline_right={3: True, 4: True, 5: True, 6: False, 9: True})
+    assert groups["named right"] == {"objects": 1, "baseline_right": 1}
+    assert groups["named wrong"] == {"objects": 1, "baseline_right": 1}
+    assert groups["inflated"] == {"objects": 1, "baseline_right": 1}
+    assert groups["partial"] == {"objects": 1, "baseline_right": 0}
+    assert sum(g["objects"] for g in groups.values()) == 4        # object 9 is not stacked

@@ -175,9 +175,13 @@ def test_translate_drops_unmatched_targets():
 
     qs = [SuiteQuery(id="a", map="gt.json", query="find the cup", type="o", target=2, accept=[2, 5]),
           SuiteQuery(id="b", map="gt.json", query="find the bed", type="o", target=9, accept=[9])]
-    kept, dropped = translate(qs, {2: 11, 3: 12}, "built.iesm")
-    assert dropped == 1 and len(kept) == 1
+    kept, counts = translate(qs, {2: [11], 3: [12]}, "built.iesm")
+    assert counts == (1, 0, 1) and len(kept) == 1
     assert (kept[0].target, kept[0].accept, kept[0].map) == (11, [11], "built.iesm")
+    # a target held only by its own instances (no IoU pair): kept, every piece accepted, counted apart
+    kept, counts = translate(qs, {2: [11], 5: [14, 13], 9: [20, 21]}, "built.iesm", matched={2, 5})
+    assert counts == (1, 1, 0)
+    assert [(q.target, q.accept) for q in kept] == [(11, [11, 13, 14]), (20, [20, 21])]
 
 
 def test_a_segmenter_replaces_missing_seg_files(tiny, tmp_path):
@@ -224,7 +228,57 @@ def test_queries_target_only_objects_the_frames_show(tiny, tmp_path):
         1: by_label["table"], 2: by_label["cup"], 3: by_label["chair"]}
     # a ground truth without frames has no observed footprints: matched on the box footprints
     assert observed_masks(tmp_path, gt) is None and observed_masks(None, gt) is None
-    result, dropped = asyncio.run(generate_gt_suite(str(built), frames, tmp_path / "s.jsonl", ["o"], per_type=10))
-    assert dropped == 0 and result.queries
+    result, counts = asyncio.run(generate_gt_suite(str(built), frames, tmp_path / "s.jsonl", ["o"], per_type=10))
+    assert counts.dropped == 0 and counts.own == 0 and result.queries
     assert {q.target for q in result.queries} <= set(by_label.values())
     assert not any("sofa" in q.query for q in result.queries)
+
+
+def test_an_inflated_instance_still_holds_its_object(tiny, tmp_path):
+    """A footprint spread too wide for IoU > 0.5 is still the object's instance for a query: its
+    masks show that object; an object whose masks all went into another's instance is not."""
+    import shutil
+
+    from iesm_agent.evals.mapping_causes import built_instances
+    from iesm_agent.evals.observed import observed_masks
+
+    frames = tmp_path / "frames"
+    shutil.copytree(tiny, frames)
+    built = tmp_path / "tiny.iesm"
+    assert run(["build-map", str(frames), "-o", str(built)]) == 0
+    scene = load_map(built)
+    gt = GroundTruth.load(frames)
+    observed = observed_masks(frames, gt)
+    by_label = {i.label: i.id for i in scene.instances}
+    cup = by_label["cup"]
+    flat, ids, top = scene.occupancy.entries()
+    grid = scene.grid
+    r, c = np.divmod(flat[ids == cup], grid.width)
+    # the cup's footprint grown by 4 cells on every side: IoU with what the frames show falls under 0.5
+    rows, cols = np.mgrid[r.min() - 4:r.max() + 5, c.min() - 4:c.max() + 5]
+    grown = (rows * grid.width + cols).ravel()
+    keep = ids != cup
+    occupancy = InstanceGrid.from_entries(np.r_[flat[keep], grown], np.r_[ids[keep], np.full(len(grown), cup)],
+                                          np.r_[top[keep], np.full(len(grown), 0.87)])
+    inflated = scene.model_copy(update={"occupancy": occupancy})
+    instances, matched = built_instances(inflated, gt, frames, observed)
+    assert 2 not in matched and instances[2] == [cup]
+    assert instances[1] == [by_label["table"]] and 1 in matched
+    # a second piece of the cup, holding two of its views: both pieces are the cup, the paired one first
+    piece = scene.instance(cup).model_copy(update={"id": 99})
+    obs = scene.observations.copy()
+    cup_rows = np.flatnonzero(obs[:, 0] == cup)
+    obs[cup_rows[:2], 0] = 99
+    split = scene.model_copy(update={
+        "instances": [*scene.instances, piece], "observations": obs,
+        "embeddings": np.vstack([scene.embeddings, scene.embeddings[[scene.instances.index(scene.instance(cup))]]]),
+        "occupancy": InstanceGrid.from_entries(np.r_[flat, flat[ids == cup][:1]], np.r_[ids, [99]],
+                                               np.r_[top, [0.87]])})
+    instances, matched = built_instances(split, gt, frames, observed)
+    assert 2 in matched and instances[2] == [cup, 99]
+    # the cup's observations moved to the table's instance: the map holds no cup of its own
+    obs = inflated.observations.copy()
+    obs[obs[:, 0] == cup, 0] = by_label["table"]
+    swallowed = inflated.model_copy(update={"observations": obs})
+    instances, matched = built_instances(swallowed, gt, frames, observed)
+    assert 2 not in instances

@@ -275,7 +275,8 @@ def test_sizes_read_from_labels_and_captions_including_superlatives(model, lib, 
     msgs = lib.render("expert.j2", query=query, focus=EXPERTS["desc"]["focus"], hint="",
                       candidates=candidates, kappa=2)
     ranked = json.loads(model.complete(msgs).text)["ranked_instance_ids"]
-    assert ranked[0] == expected and 3 not in ranked
+    # the description expert reads looks first: a big chair may follow the biggest table, never lead
+    assert ranked[0] == expected
 
 
 FOCUS_CANDS = [
@@ -298,3 +299,49 @@ def test_a_plugin_focus_is_followed_as_written(model, lib, focus, expected):
     msgs = lib.render("expert.j2", query="the red armchair in the kitchen", focus=focus, hint="",
                       candidates=FOCUS_CANDS, kappa=2)
     assert json.loads(model.complete(msgs).text)["ranked_instance_ids"][0] == expected
+
+
+# -- experts that read for themselves ----------------------------------------------------------------
+# A book whose caption fits the request, and a remote control the word "cover" hints at (a cue for
+# blankets); the request names no category the lexicon knows for the book.
+OWN_EVIDENCE = [
+    {"id": 1, "label": "book", "room": "study", "caption": "A green clothbound book with silver letters on its cover."},
+    {"id": 2, "label": "blanket", "room": "bedroom", "caption": "A thick grey wool blanket."},
+    {"id": 3, "label": "remote control", "room": "study", "caption": "A small black remote control."},
+]
+
+
+def test_the_description_expert_reads_the_whole_request_against_captions(model, lib):
+    # "cover" hints at blankets; the caption says what the request describes
+    query = "the green clothbound one with silver letters on the cover"
+    assert expert_rank(model, lib, "desc", query, cands=OWN_EVIDENCE)[0] == 1
+    assert expert_rank(model, lib, "abs", query, cands=OWN_EVIDENCE)[0] == 2
+
+
+def test_the_object_expert_ranks_by_the_named_category_not_by_the_function(model, lib):
+    # a named blanket on the map: the object expert's evidence, whatever "to read" asks for
+    assert expert_rank(model, lib, "obj", "the blanket I read under", cands=OWN_EVIDENCE)[0] == 2
+
+
+def _gate(model, lib, query, candidates):
+    return ask(model, lib.render("gate.j2", query=query, experts=list(EXPERTS.values()),
+                                 candidates=candidates))["scores"]
+
+
+def test_the_gate_weighs_a_category_the_map_lacks_less(model, lib):
+    on_map = _gate(model, lib, "the grey blanket", OWN_EVIDENCE)
+    absent = _gate(model, lib, "the grey duvet", OWN_EVIDENCE[:1] + OWN_EVIDENCE[2:])
+    assert on_map["obj"] == 4 and absent["obj"] == 2
+
+
+@pytest.mark.parametrize("query, purpose", [
+    ("the green folio with silver letters on the cover", False),  # a noun modifying the target
+    ("somewhere I can sit for a minute", True),                  # a verb says what to do
+    ("any seat will do", True),                                   # the cue names the target's class
+    ("something for storage", True),                              # an abstract target's purpose
+])
+def test_a_use_is_a_purpose_only_when_the_request_says_it(query, purpose):
+    from iesm_agent.understanding import analyse_query
+
+    q = analyse_query(query)
+    assert q.afford and q.purpose is purpose

@@ -189,3 +189,22 @@ def test_a_leading_exclusion_negates_its_own_relations_only():
     assert [(r.kind, r.landmarks, r.negated) for r in jug.relations] == [("on", [("piano",)], True), ("on", [("shelf",)], False)]
     stool = parse_query("Not the green stool, the one by the piano.")
     assert [(r.kind, r.negated) for r in stool.relations] == [("near", False)]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the scarf we left on the piano bench", [("on", [("bench",)], "")]),  # a verb with its subject
+    ("the hours they have left before dinner", []),
+    ("facing the fireplace, the left stool", [("left", [], "")]),         # a side, however tagged
+])
+def test_a_side_word_said_as_a_verb_is_not_a_relation(text, expected):
+    assert _relations(text) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the stool behind the piano", [("behind", [("piano",)], "")]),          # "behind" takes its object
+    ("the stool right behind the piano", [("behind", [("piano",)], "")]),
+    ("the candle right next to the vase", [("near", [("vase",)], "")]),       # "right" intensifies
+    ("the candle on the right next to the vase", [("right", [], ""), ("near", [("vase",)], "")]),
+])
+def test_behind_takes_its_landmark_and_right_before_a_relation_intensifies(text, expected):
+    assert _relations(text) == expected

@@ -172,11 +172,12 @@ def gen_queries_command(
 
         if len(maps) != 1:
             raise IesmError("--gt takes exactly one MAP (the map built from that frame directory)", "--gt")
-        result, dropped = asyncio.run(generate_gt_suite(maps[0], gt, out, parse_types(types), per_type=per_type,
-                                                        seed=seed, model=model, paraphrases=paraphrases,
-                                                        id_prefix=id_prefix))
-        print(f"{len(result.queries)} queries from the ground truth in {gt}; {dropped} dropped (target not "
-              f"matched in {maps[0]})")
+        result, counts = asyncio.run(generate_gt_suite(maps[0], gt, out, parse_types(types), per_type=per_type,
+                                                       seed=seed, model=model, paraphrases=paraphrases,
+                                                       id_prefix=id_prefix))
+        print(f"{len(result.queries)} queries from the ground truth in {gt} ({counts.matched} targets paired by "
+              f"footprint IoU, {counts.own} by their own instances); {counts.dropped} dropped (target not "
+              f"held in {maps[0]})")
         return
     result = asyncio.run(generate_suite(maps, out, parse_types(types), per_type=per_type, seed=seed, model=model,
                                         paraphrases=paraphrases, id_prefix=id_prefix))

@@ -3,10 +3,14 @@
 Queries are generated from the objects of gt/objects.json that the frames show (seen in at least
 `min_mask_pixels` pixels of the instance images; all objects when there are none), imported in
 memory as an object-list map so the built map's own labels never leak into the queries. Each
-query's target and accepted ids are translated to built-map ids with `match_instances` against the
-observed footprints (top-down IoU > 0.5, as the mapping table's first ground truth). A query whose
-target has no match (an object the map does not hold as an instance of its own) is dropped;
-accepted ids without a match are left out. Each query gets a
+query's target and accepted ids are translated to built-map ids (`built_instances`): the instance
+`match_instances` pairs the object with (observed footprints, top-down IoU > 0.5, as the mapping
+table) and, for a map built from these frames, the object's own instances (those most of whose
+masks show it, holding at least half of its masks; `evals.mapping_causes`) that no other object is
+paired with: the map holds the object even when its footprint is too large, too small or in pieces
+for IoU > 0.5, and each of its pieces is the object. A query whose target has neither (the object
+never reached the map or went into other objects' instances) is dropped; accepted ids without
+either are left out. Each query gets a
 seeded random robot start (x, y) in metres on free ground-truth floor, so `iesm eval` can report
 N-SR on the map.
 """
@@ -17,18 +21,18 @@ import json
 import os
 import tempfile
 from pathlib import Path
-from typing import Sequence
+from typing import NamedTuple, Optional, Sequence
 
 import numpy as np
 
 from .generate import GenerationResult, generate_suite
+from .mapping_causes import built_instances
 from .observed import observed_masks
 from .suite import SuiteQuery, write_suite
 from ..sim.ground_truth import GroundTruth
 from ..store import open_map
 from ..store.importers.objects import ObjectSpec
 from ..store.refs import resolve_map_path
-from .matching import match_instances
 
 
 #: a start keeps at least this much free floor around it, metres
@@ -49,26 +53,39 @@ def free_starts(gt: GroundTruth, n: int, seed: int) -> list[tuple[float, float]]
     return [tuple(round(v, 2) for v in gt.grid.center_of(int(r), int(c))) for r, c in picks]
 
 
-def translate(queries: Sequence[SuiteQuery], matches: dict[int, int], map_ref: str) -> tuple[list[SuiteQuery], int]:
-    """`queries` on ground-truth ids -> the same queries on built-map ids (`map_ref`); returns
-    them and the number dropped because the target has no matched instance."""
-    kept, dropped = [], 0
+class TargetCounts(NamedTuple):
+    """How a suite's queries found their targets on the built map: paired by footprint IoU, by the
+    object's own instances (`built_instances`), or dropped (neither)."""
+
+    matched: int
+    own: int
+    dropped: int
+
+
+def translate(queries: Sequence[SuiteQuery], instances: dict[int, Sequence[int]], map_ref: str,
+              matched: Optional[set[int]] = None) -> tuple[list[SuiteQuery], TargetCounts]:
+    """`queries` on ground-truth ids -> the same queries on built-map ids (`map_ref`): the target is
+    the first of `instances[target]`, accept every instance of every accepted id; returns them and
+    the counts (targets in `matched`, default all of `instances`, count as paired by IoU)."""
+    matched = set(instances) if matched is None else matched
+    kept, by_iou, dropped = [], 0, 0
     for q in queries:
-        if q.target not in matches:
+        if not instances.get(q.target):
             dropped += 1
             continue
-        accept = sorted({matches[a] for a in q.accept if a in matches})
-        kept.append(SuiteQuery(id=q.id, map=map_ref, query=q.query, type=q.type, target=matches[q.target],
+        by_iou += q.target in matched
+        accept = sorted({p for a in q.accept for p in instances.get(a, ())})
+        kept.append(SuiteQuery(id=q.id, map=map_ref, query=q.query, type=q.type, target=instances[q.target][0],
                                accept=accept, group=q.group))
-    return kept, dropped
+    return kept, TargetCounts(by_iou, len(kept) - by_iou, dropped)
 
 
 async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | Path, types: Sequence[str], *,
                             per_type: int = 10, seed: int = 0, model=None, paraphrases: int = 1,
-                            id_prefix: str = "") -> tuple[GenerationResult, int]:
+                            id_prefix: str = "") -> tuple[GenerationResult, TargetCounts]:
     """Write a suite for `built_map` whose queries come from the ground truth in `frames_dir`
-    (`paraphrases`, `id_prefix` as in `generate_suite`); returns the generation result and the
-    number of queries dropped (no matched target); objects the frames never show are not targets."""
+    (`paraphrases`, `id_prefix` as in `generate_suite`); returns the generation result and how the
+    targets were found on the map (`TargetCounts`); objects the frames never show are not targets."""
     out = Path(out)
     map_path = resolve_map_path(built_map)
     scene = open_map(map_path)
@@ -83,11 +100,12 @@ async def generate_gt_suite(built_map: str, frames_dir: str | Path, out: str | P
         result = await generate_suite([str(src)], Path(tmp) / "suite.jsonl", types, per_type=per_type, seed=seed,
                                       model=model, paraphrases=paraphrases, id_prefix=id_prefix)
     ref = Path(os.path.relpath(map_path, out.resolve().parent)).as_posix()
-    queries, dropped = translate(result.queries, match_instances(scene, gt, observed=observed), ref)
+    instances, matched = built_instances(scene, gt, frames_dir, observed)
+    queries, counts = translate(result.queries, instances, ref, matched)
     starts = free_starts(gt, len(queries), seed)
     if starts:
         queries = [q.model_copy(update={"start": start}) for q, start in zip(queries, starts)]
     write_suite(queries, out)
     result.queries = queries
-    return result, dropped
+    return result, counts
 

@@ -187,6 +187,21 @@ def prediction_from_pointwise(keys: np.ndarray, scores: np.ndarray, cell_size: f
     return Prediction(ctx.gt_ids.copy(), ranking, (gflat, gids, gtop), cell_classes, matches)
 
 
+def pairs(pred: Prediction, ctx: EvalContext) -> dict[int, int]:
+    """{gt id: predicted id}: `pred.matches` when fixed, else top-down IoU > `match_iou`, one-to-one."""
+    if pred.matches is not None:
+        return pred.matches
+    g, p, iou = iou_pairs((pred.cells[0], pred.cells[1]), (ctx.gt_cells[0], ctx.gt_cells[1]))
+    keep = np.isin(g, ctx.gt_ids)
+    return greedy_pairs(g[keep], p[keep], iou[keep], ctx.cfg.match_iou)
+
+
+def named_right(pred: Prediction, ctx: EvalContext, matches: dict[int, int]) -> dict[int, bool]:
+    """{gt id: True when the predicted instance paired with it (`matches`) ranks its category first}."""
+    row = {int(i): k for k, i in enumerate(pred.ids.tolist())}
+    return {g: bool(ctx.gt_class[g] >= 0 and pred.ranking[row[p], 0] == ctx.gt_class[g]) for g, p in matches.items()}
+
+
 def score(pred: Prediction, ctx: EvalContext, only: Optional[set[int]] = None) -> dict:
     """Every mapping metric of `pred` (keys: auc_top {pred, gt, match, top1_match}, instance_diff,
     n_pred, n_gt, n_matched, matched_ids, topdown {acc, macc, miou, fmiou}, small {...}, stacked
@@ -194,11 +209,7 @@ def score(pred: Prediction, ctx: EvalContext, only: Optional[set[int]] = None) -
     matched-object metrics on these ground-truth ids alone (a baseline on the objects another
     method matched)."""
     j = len(ctx.categories)
-    matches = pred.matches
-    if matches is None:
-        g, p, iou = iou_pairs((pred.cells[0], pred.cells[1]), (ctx.gt_cells[0], ctx.gt_cells[1]))
-        keep = np.isin(g, ctx.gt_ids)
-        matches = greedy_pairs(g[keep], p[keep], iou[keep], ctx.cfg.match_iou)
+    matches = pairs(pred, ctx)
     if only is not None:
         matches = {g: p for g, p in matches.items() if g in only}
     gt_m = np.array(sorted(matches), np.int64)

@@ -13,16 +13,23 @@ instance is the object's own when that is the object. Causes, tested in this ord
 * "inflated": an own instance covers at least `COVER` of it, yet the IoU stays at or under the
   match threshold: the footprint spread beyond what was seen;
 * "partial": what remains: its own instances cover under `COVER` of it (misplaced or thin).
+
+`built_instances` gives the instances that hold an object for queries and navigation: its IoU pair
+and its own instances, which hold it even when too large, too small or in pieces for IoU > 0.5.
 """
 
 from __future__ import annotations
 
 from collections import Counter
+from pathlib import Path
 
 import numpy as np
 
+from ..config import MappingConfig
 from ..frames import FrameSet
+from ..store.model import SceneMap
 from ..mapping.cells import intersections
+from .matching import match_instances
 
 #: share of an object's observed cells an own instance must cover to explain it
 COVER = 0.5
@@ -46,6 +53,51 @@ def mask_objects(frames: FrameSet, min_pixels: int) -> dict[tuple[int, int], int
     return out
 
 
+def mask_attribution(observations: np.ndarray, shows: dict[tuple[int, int], int]
+                     ) -> tuple[dict[int, Counter], dict[int, int]]:
+    """(object -> Counter of the instances its masks went to, instance -> its main object: the object
+    most of its masks show, ties to the lower id), from the map's `observations` (M, >= 3) rows
+    [instance id, frame, mask, ...] and `shows` (`mask_objects`); masks `shows` lacks are left out."""
+    went: dict[int, Counter] = {}
+    holds: dict[int, Counter] = {}
+    for inst, frame, mask in np.asarray(observations, np.float64)[:, :3].astype(np.int64).tolist():
+        obj = shows.get((frame, mask))
+        if obj is not None:
+            went.setdefault(obj, Counter())[inst] += 1
+            holds.setdefault(inst, Counter())[obj] += 1
+    return went, {inst: min(c.items(), key=lambda kv: (-kv[1], kv[0]))[0] for inst, c in holds.items()}
+
+
+def own_instances(obj: int, went: dict[int, Counter], main: dict[int, int]) -> list[int]:
+    """The object's own instances (whose main object it is), most of its masks first (ties: lower
+    id); [] when it has none or when most of its masks went into other objects' instances."""
+    masks = went.get(obj, Counter())
+    own = sorted((inst for inst in masks if main.get(inst) == obj), key=lambda inst: (-masks[inst], inst))
+    return own if sum(masks[inst] for inst in own) * 2 >= sum(masks.values()) > 0 else []
+
+
+def built_instances(scene: SceneMap, gt, frames_dir: str | Path,
+                    observed: tuple[np.ndarray, np.ndarray, np.ndarray] | None) -> tuple[dict[int, list[int]], set[int]]:
+    """({gt id: built ids, the one to name first}, gt ids paired by IoU): the `match_instances`
+    pair first, then the object's own instances (`own_instances`, most of its masks first) paired
+    with no other object: the pieces of a split object are all of it. `gt` is a `GroundTruth`,
+    `observed` the observed footprints of `frames_dir`'s objects (`evals.observed.observed_masks`).
+    Own instances need those, the map's observations and the frames' masks (seg.npz); without
+    them only IoU pairs count."""
+    matches = match_instances(scene, gt, observed=observed)
+    out = {g: [p] for g, p in matches.items()}
+    if observed is None or scene.observations is None or not len(scene.observations):
+        return out, set(matches)
+    shows = mask_objects(FrameSet.open(frames_dir), MappingConfig().min_mask_pixels)
+    went, main = mask_attribution(scene.observations, shows)
+    paired = set(matches.values())
+    for obj in went:
+        pieces = out.get(obj, []) + [inst for inst in own_instances(obj, went, main) if inst not in paired]
+        if pieces:
+            out[obj] = pieces
+    return out, set(matches)
+
+
 def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[np.ndarray, np.ndarray],
                      gt_ids: np.ndarray, matched: set[int], observations: np.ndarray,
                      shows: dict[tuple[int, int], int]) -> dict[int, str]:
@@ -53,14 +105,7 @@ def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[
     id) entry arrays in one grid: `pred_cells` the map's instances, `gt_cells` the observed
     ground-truth footprints; `observations` (M, >= 3) the map's rows [instance id, frame, mask,
     ...]; `shows` the object each frame mask mostly shows (`mask_objects`)."""
-    went: dict[int, Counter] = {}          # object -> Counter of instances its masks went to
-    holds: dict[int, Counter] = {}         # instance -> Counter of objects its masks show
-    for inst, frame, mask in np.asarray(observations, np.float64)[:, :3].astype(np.int64).tolist():
-        obj = shows.get((frame, mask))
-        if obj is not None:
-            went.setdefault(obj, Counter())[inst] += 1
-            holds.setdefault(inst, Counter())[obj] += 1
-    main = {inst: min(c.items(), key=lambda kv: (-kv[1], kv[0]))[0] for inst, c in holds.items()}
+    went, main = mask_attribution(observations, shows)
     gflat, gid = gt_cells
     g, p, inter = intersections(gflat, gid, *pred_cells)
     gt_area = np.bincount(gid, minlength=int(gid.max(initial=0)) + 1)
@@ -68,12 +113,11 @@ def unmatched_causes(pred_cells: tuple[np.ndarray, np.ndarray], gt_cells: tuple[
     for i in gt_ids.tolist():
         if i in matched:
             continue
-        masks = went.get(i)
-        if not masks:
+        if not went.get(i):
             out[i] = "never segmented"
             continue
-        own = [inst for inst in masks if main.get(inst) == i]
-        if sum(masks[inst] for inst in own) * 2 < sum(masks.values()):
+        own = own_instances(i, went, main)
+        if not own:
             out[i] = "swallowed"
             continue
         sel = (g == i) & np.isin(p, own)

@@ -82,14 +82,15 @@ class NavTrials:
 
     @classmethod
     def for_map(cls, scene: SceneMap, gt, frames_dir=None, **kwargs) -> "NavTrials":
-        """Trials for a map built from the frames whose ground truth is `gt`, ids matched by
-        `evals.matching.match_instances` (the paper's top-down IoU > 0.5; against the observed
-        footprints when `frames_dir`, the frame directory, is given)."""
+        """Trials for a map built from the frames whose ground truth is `gt`, ids paired by
+        `evals.mapping_causes.built_instances` (the paper's top-down IoU > 0.5, against the observed
+        footprints when `frames_dir`, the frame directory, is given; then an object's own instances),
+        as the queries written from that ground truth are."""
+        from .mapping_causes import built_instances
         from .observed import observed_masks
-        from .matching import match_instances
 
-        matched = match_instances(scene, gt, observed=observed_masks(frames_dir, gt))
-        return cls(scene, gt, {pred: gt_id for gt_id, pred in matched.items()}, **kwargs)
+        instances, _ = built_instances(scene, gt, frames_dir, observed_masks(frames_dir, gt))
+        return cls(scene, gt, {pred: gt_id for gt_id, preds in instances.items() for pred in preds}, **kwargs)
 
     def run(self, instance_id: int, start_xy: tuple[float, float], judge_id: Optional[int] = None) -> TrialOutcome:
         """Go to built instance `instance_id` from `start_xy`; success is judged against the

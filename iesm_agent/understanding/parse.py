@@ -35,7 +35,7 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 _MOTION_PREPOSITIONS = frozenset({"to", "towards", "toward", "into", "onto"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
-_NOUNS = ("NOUN", "PROPN")
+NOUNS = ("NOUN", "PROPN")
 
 _lock = threading.Lock()
 _nlp = None
@@ -98,7 +98,7 @@ class Structure:
         while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
             k = word.head
             word = self.words[k]
-        if word.dep not in ("amod", "compound", "nmod", "poss", "nummod") or self.words[word.head].pos not in _NOUNS:
+        if word.dep not in ("amod", "compound", "nmod", "poss", "nummod") or self.words[word.head].pos not in NOUNS:
             return None
         noun = word.head
         while self.words[noun].dep == "compound" and self.words[noun].head != noun:
@@ -200,7 +200,7 @@ def _left_place(doc, request: tuple[int, int]) -> int | None:
     """The noun the request wants out of: the object of "leave"/"exit", or the noun after "out
     of" ("take me out of the bathroom"); None when it wants out of nothing."""
     for t in doc:
-        if not request[0] <= t.idx < request[1] or t.pos_ not in _NOUNS:
+        if not request[0] <= t.idx < request[1] or t.pos_ not in NOUNS:
             continue
         if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
             return t.i
@@ -232,7 +232,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     noun phrase), "description" (a statement about an object: "this is a chair", "the chair is
     by the desk"), "personal" (about the speaker), "continuation" (its subject stands for an
     earlier target: "it is by the desk"), "empty" (no content word)."""
-    content = [t for t in sent if t.pos_ in _NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM")]
+    content = [t for t in sent if t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM")]
     if not content:
         return "empty", None
     root = sent.root
@@ -244,7 +244,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     command = _command(doc, sent)
     if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
         found = command[1]
-        shown = next((c.i for c in doc[found].children if c.dep_ == "appos" and c.pos_ in _NOUNS), None) \
+        shown = next((c.i for c in doc[found].children if c.dep_ == "appos" and c.pos_ in NOUNS), None) \
             if found is not None else None
         return ("request", shown) if shown is not None else ("viewpoint", found)
     if command is not None and command[1] is not None:  # "it's chilly, so lead me to a quilt"
@@ -273,7 +273,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     found = _object_of(doc, root)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
-                      and t.head.pos_ in _NOUNS), None)
+                      and t.head.pos_ in NOUNS), None)
     return ("request" if question else "description"), found
 
 
@@ -281,12 +281,12 @@ def _noun_of(token) -> int | None:
     """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
     the parse puts where a noun goes but tags otherwise ("the paint can is", "the kettle nearest to"),
     the noun compounded with it; else None."""
-    if token.pos_ in _NOUNS:
+    if token.pos_ in NOUNS:
         return token.i
     if token.pos_ in ("PRON", "DET", "NUM"):
         return None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
-                 and c.pos_ in _NOUNS and c.i == token.i - 1), None)
+                 and c.pos_ in NOUNS and c.i == token.i - 1), None)
 
 
 def _telegraphic_target(root) -> int:
@@ -294,7 +294,7 @@ def _telegraphic_target(root) -> int:
     for a modifier ("stool nearest fridge"), the noun before the superlative."""
     lefts = list(root.lefts)
     for k, word in enumerate(lefts):
-        if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in _NOUNS:
+        if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in NOUNS:
             return lefts[k - 1].i
     return root.i
 
@@ -303,7 +303,7 @@ def _copula_attribute(root) -> int | None:
     """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
     left": the copula or one joined to it), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
-                 for c in verb.children if c.dep_ == "attr" and c.pos_ in _NOUNS), None)
+                 for c in verb.children if c.dep_ == "attr" and c.pos_ in NOUNS), None)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
@@ -332,7 +332,7 @@ def _misread_verb(token) -> bool:
     """True for a verb of motion the tagger read as a noun ("Head to the sofa", "..., head to
     the rug"): a bare noun opening a clause, with a preposition of motion after it."""
     opens = token.i == token.sent.start or token.nbor(-1).is_punct
-    return (token.pos_ in _NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
+    return (token.pos_ in NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
             and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS
                     and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
                     for c in token.children))  # "Head (over) to", not "Stool nearest to"
@@ -367,7 +367,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if child.dep_ in _CLAUSES and child.pos_ in ("VERB", "AUX"):
             found = _object_of(doc, child)
             if found is None and child.dep_ == "ccomp":  # "show me where the towels are"
-                found = next((g.i for g in child.children if g.dep_ == "nsubj" and g.pos_ in _NOUNS), None)
+                found = next((g.i for g in child.children if g.dep_ == "nsubj" and g.pos_ in NOUNS), None)
             if found is not None:
                 return found
     for child in verb.children:
@@ -379,7 +379,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
 def _attribute_of(doc, root) -> int | None:
     """The noun a copula names ("there is a green stool", "this is a bar stool")."""
     for child in root.children:
-        if child.dep_ in ("attr", "nsubj", "dobj") and child.pos_ in _NOUNS:
+        if child.dep_ in ("attr", "nsubj", "dobj") and child.pos_ in NOUNS:
             return child.i
     return _object_of(doc, root)
 
@@ -390,11 +390,11 @@ def _antecedent(doc, index: int) -> int:
     named before it as subject or object ("which vase holds tulips? take me to it"); the word
     itself when there is none."""
     of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
-    named = next((g.i for g in of.children if g.dep_ == "pobj" and g.pos_ in _NOUNS), None) if of else None
+    named = next((g.i for g in of.children if g.dep_ == "pobj" and g.pos_ in NOUNS), None) if of else None
     if named is not None:  # "one of the seats"
         return named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
-        return next((t.i for t in doc[:index] if t.pos_ in _NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")),
+        return next((t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")),
                     index)
     if doc[index].lower_ not in ("one", "ones"):
         return index

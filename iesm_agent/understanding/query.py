@@ -10,7 +10,7 @@ from types import MappingProxyType, SimpleNamespace
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
-from .parse import Structure, Word, normalise, parse_many, parse_request
+from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
 from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
@@ -35,6 +35,10 @@ class QueryInfo:
     afford: dict[str, float] = field(default_factory=dict)    # category -> affordance weight
     kin: dict[str, float] = field(default_factory=dict)       # kinds that serve the named kind's purpose
     abstract: bool = False                                    # "something", "a place to ..."
+    #: the function is said by a verb or a phrase ("to sit", "turn the heating down"), a class noun
+    #: ("seating"), a cue naming the target ("a seat"), an abstract target ("something for
+    #: storage") or the context, not only by a noun modifying the target ("the gold cover")
+    purpose: bool = False
     head_words: frozenset[str] = frozenset()                  # lemmas of the target phrase
     slots: tuple[Slot, ...] = ()                              # attributes as written (surface + family)
     overlap: frozenset[str] = frozenset()                     # stems of extra and attribute words
@@ -306,6 +310,7 @@ def analyse_query(text: str) -> QueryInfo:
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
     for positions, idx in lex.gapped_cues(reading.lemmas):
+        info.purpose = info.purpose or len(positions) > 1  # "turn the heating down": a phrase says what to do
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)
@@ -314,6 +319,7 @@ def analyse_query(text: str) -> QueryInfo:
         scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
         for concept, weight in context.afford.items():  # never above what the request itself asks
             afford[concept] = max(afford.get(concept, 0.0), scale * weight)
+        info.purpose = info.purpose or context.purpose
         if not info.rooms:
             info.rooms = dict(context.rooms)
             info.room_phrase = context.room_phrase
@@ -343,6 +349,19 @@ def _draft(text: str) -> SimpleNamespace:
 
 def _named(info) -> bool:
     return any(w >= 1.0 for w in info.targets.values())
+
+
+def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
+    """True when surface token `index` is a noun the parse puts under the target noun, not the
+    head itself (a modifier, what a modifier's preposition takes: "the red book with gold on the
+    cover"), so a use it hints at describes the thing rather than says what to do; a head noun
+    that is a cue names a class of things ("a light", "a seat")."""
+    structure = reading.structure
+    at = getattr(reading.surface[index], "at", None)
+    word = None if at is None else structure.index_at(at)
+    head = target.word if target.word is not None else structure.target
+    return (word is not None and head is not None and word != head and structure.words[word].pos in NOUNS
+            and structure.dominates(head, word))
 
 
 def _leaves_a_room(reading: _Reading) -> bool:
@@ -375,6 +394,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.generic = s.values("gen")[0]
             info.target_phrase = " ".join(surface[s.start:s.end])
             _add_entry(afford, lex.generic[info.generic], 1.0)
+            info.purpose = True
             continue
         if s.has("room") and not (in_target and s.has("cat")):
             if _outside_target(reading.structure, surface, s, target, described, place_ok=True):
@@ -397,6 +417,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if s.has("cue") and s.start not in clause:
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
+            info.purpose = (info.purpose or s.end - s.start > 1 or info.abstract
+                            or not _in_target_phrase(reading, target, s.start))
         if s.has("cat") and not in_target:
             info.targets.update({c: info.targets.get(c, _THEME_WEIGHT) for c in s.values("cat") if c not in _UNSPECIFIC})
             landmark_words.update(lemmas[s.start:s.end])  # "the lamp next to the bed": captions naming it count

@@ -325,6 +325,8 @@ class _Reader:
         side_noun = nxt in ("left", "right") and self.span_at(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
+        if kind != "facing" and len(words) == 1 and self.said_by_someone(i - 1):
+            return i  # "the mug I left there": a verb with its subject, not a relation
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
             out.relations.append(Relation("wall"))
             return i + 1
@@ -341,9 +343,11 @@ class _Reader:
             self.landmark(rel, i)  # "the middle of the bed": relative to that object
             out.relations.append(rel)
             return i
-        if kind == "right" and nxt != "of" and i < len(toks) and self.word(i).pos == "ADP" \
-                and self.cue_word is not None and self.structure.words[self.cue_word].dep != "pobj":
-            return i  # "right below the sink": an intensifier, not a side
+        if kind == "right" and nxt != "of" and i < len(toks) and self.cue_word is not None and (
+                (self.word(i).pos == "ADP" and self.structure.words[self.cue_word].dep != "pobj")
+                or (self.structure.words[self.cue_word].dep == "advmod" and self.word(i).dep != "pobj"
+                    and self.structure.words[self.cue_word].head == self.words[i])):
+            return i  # "right below the sink", "right next to it": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
@@ -360,6 +364,20 @@ class _Reader:
         if self.landmark(self.pending_ordinal, i):
             self.pending_ordinal.value = "landmark"
         return i
+
+    def takes_object(self) -> bool:
+        """True when the cue word is a preposition with an object in the parse ("behind [the sofa]")."""
+        cue = self.cue_word
+        return cue is not None and any(w.head == cue and w.dep == "pobj" for w in self.structure.words)
+
+    def said_by_someone(self, i: int) -> bool:
+        """True when the parse reads token `i` as a verb with a pronoun subject ("I left it",
+        "the biscuits we have left"), not a cue word the tagger merely calls a verb ("facing the
+        door, left bin")."""
+        at = self.words[i]
+        if at is None or self.structure.words[at].pos not in ("VERB", "AUX"):
+            return False
+        return any(w.head == at and w.dep == "nsubj" and w.pos == "PRON" for w in self.structure.words)
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
@@ -394,8 +412,9 @@ class _Reader:
                 return i
             if self.inverse_by_pronoun(kind):
                 return i
-            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of():
-                self.landmark(rel, i)
+            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
+                    or (kind == "behind" and self.takes_object()):
+                self.landmark(rel, i)  # "left of my bed", "behind a sofa"
             out.relations.append(rel)
             return i
         if kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one

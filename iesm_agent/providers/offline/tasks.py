@@ -20,6 +20,7 @@ _KNOWN_ROLES = {"obj": "obj", "object": "obj", "room": "room", "desc": "desc", "
 # -- gate ------------------------------------------------------------------------------------
 def gate(prompt: Prompt) -> dict:
     q = analyse_query(prompt.query)
+    on_map = _named_on_map(q, prompt.candidate_lines)
     scores, hints = {}, {}
     for expert in prompt.experts:
         name = expert["name"]
@@ -27,23 +28,42 @@ def gate(prompt: Prompt) -> dict:
         if role is None:
             scores[name], hints[name] = _plugin_score(q, str(expert.get("gate_description", "")))
         else:
-            scores[name], hints[name] = _role_score(q, role)
+            scores[name], hints[name] = _role_score(q, role, on_map)
     return {"scores": scores, "hints": hints}
 
 
-def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
-    """0-4 per built-in expert. A named category is the decisive evidence (4): labels are the
-    mapper's most reliable output. A named room (3) and visual details (3; other loose words
-    are weak evidence, 1) qualify it, and outvote it only together (two experts agreeing on
-    another instance).
-    Without a category, the function asked for decides (abstract expert 4)."""
+#: a candidate "is" the named category when its label fits it at least this well (the category
+#: itself 1.0, a more specific kind 0.9, the parent kind a coarser map labels it with 0.6)
+_ON_MAP_FIT = 0.6
+
+
+def _named_on_map(q: QueryInfo, lines: list[str]) -> bool:
+    """True when some candidate's label is the category the query names (or a kind of it), or
+    when the prompt shows no candidates to check against."""
+    parsed = _parse_candidates(lines)
+    if not q.named or not parsed:
+        return True
+    lex = load_lexicon()
+    named = [c for c, w in q.targets.items() if w >= 1.0]
+    return any(wc * lex.concept_sim(t, c) >= _ON_MAP_FIT for _, r in parsed for c, wc in r.concepts for t in named)
+
+
+def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]:
+    """0-4 per built-in expert. A named category is the decisive evidence (4) when the map has
+    it: labels are the mapper's most reliable output; a category no candidate carries is some
+    evidence (2), as the request may call the object by another name. A named room (3) and
+    visual details (3; other loose words are weak evidence, 1) qualify it, and outvote it only
+    together (two experts agreeing on another instance).
+    Without a category, the function asked for decides (abstract expert 4) when the request says
+    what it wants to do; a noun modifying the target that only hints at a use ("the book with
+    the gold cover") is some evidence (2)."""
     attrs = " ".join(v for _, v in q.attrs)
     loose = q.extra - _unknown_words(q)
     n_desc = len(q.attrs) + 0.5 * min(2, len(loose))
     explicit_room = any(w >= 1.0 for w in q.rooms.values()) or bool(q.unknown_room)
     if role == "obj":
         if q.named:
-            return 4, q.target_phrase or ""
+            return (4 if on_map else 2), q.target_phrase or ""
         return (2 if q.generic or q.unknown_target else 1 if q.targets else 0), q.target_phrase or q.unknown_target or ""
     if role == "room":
         score = 3 if explicit_room else 1 if q.rooms else 0
@@ -58,7 +78,7 @@ def _role_score(q: QueryInfo, role: str) -> tuple[int, str]:
     if q.named:
         score = 1 if q.afford else 0
     elif q.afford:
-        score = 4
+        score = 4 if q.purpose else 2
     else:
         score = 2 if q.abstract else 0
     return score, ", ".join(top)
@@ -176,6 +196,13 @@ def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
     return _tiers(fit, 0.3)
 
 
+def _label_tier(comp: np.ndarray) -> np.ndarray:
+    """Tiers of the category the query names as its target, by the labels alone (what the object
+    expert reads; the function asked for is the abstract expert's evidence); all 0 when only
+    other things are named (a landmark's weight, 0.35, stays under 0.5)."""
+    return _tiers(comp[:, _LABEL], 0.5)
+
+
 def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarray:
     """Candidates of the asked-for kind, a partial or related kind, or a kind that serves the
     same purpose (stool for chair); every candidate when the query asks for no kind."""
@@ -200,7 +227,7 @@ def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
     """Category first: the named kind (a more specific kind counts as that kind), or with no
     category the kinds that serve the asked-for function; the other evidence (room, appearance,
     text) only orders candidates of the same tier, the label's graded fit last."""
-    tier = _kind_tier(q, comp)
+    tier = _label_tier(comp)
     evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0])
     return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
 
@@ -226,9 +253,8 @@ def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarr
     """Appearance first among the asked-for and related kinds (a red stool before a black chair
     for "the red chair"), then the kind, then the label's fit; unrelated objects after them."""
     tier = _kind_tier(q, comp)
-    related = _related_kind(q, comp, tier)
-    desc = comp[:, _DESC] + (0.3 * comp[:, _EMB] if not q.slots else 0.0)
-    score = _FIRST * related + _SECOND * desc + 3.0 * tier + comp[:, _LABEL] + 0.3 * comp[:, _TEXT]
+    desc = comp[:, _DESC] + 0.5 * comp[:, _TEXT] + 0.5 * comp[:, _EMB]
+    score = _SECOND * desc + 3.0 * tier + comp[:, _LABEL]
     return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3]) > 1e-9) | (tier >= 2)
 
 
