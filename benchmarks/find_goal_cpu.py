@@ -3,9 +3,10 @@ model, measured with per-thread CPU time around each part, on the queries `bench
 in its bursts (first time in the process, then repeated), and the server's own share
 (`MapService.find_goal` on its worker pool, all threads, minus the retrieval alone).
 
-Also measured: the English parser one sentence at a time (as a query is read today) against
-`nlp.pipe` over the same sentences in batches of 40 (what a burst could cost if its queries
-were parsed together).
+Also measured: the English parser one sentence at a time (as a query asked alone is read) against
+`nlp.pipe` over the same sentences in batches of 40, per pipeline component too, and the burst
+path: the queries parsed in batches of 40 as `iesm serve` parses the queries waiting together
+(`understanding.parse_queries`), then retrieved.
 
 Run from the repository root: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/find_goal_cpu.py
 (not part of `make bench`: it reports shares, no target).
@@ -25,16 +26,22 @@ sys.path.insert(0, str(Path(__file__).parent))
 from bench_server import queries  # noqa: E402
 
 from iesm_agent.providers.offline import OfflineModel  # noqa: E402
+from iesm_agent.providers.offline import model as offline_model  # noqa: E402
+from iesm_agent.providers.offline import spatial, tasks  # noqa: E402
 from iesm_agent.retrieval import calls, mtefr, retriever  # noqa: E402
 from iesm_agent.retrieval.retriever import Retriever  # noqa: E402
 from iesm_agent.server import MapService  # noqa: E402
 from iesm_agent.store import MapStore, open_map  # noqa: E402
-from iesm_agent.understanding import parse, query  # noqa: E402
+from iesm_agent.understanding import analyse_query, parse, parse_queries, query  # noqa: E402
 
 #: (label, owner, attribute): the parts timed, each with the thread's CPU clock
 PARTS = (("English parser (spaCy)", query, "parse_request"),
          ("query analysis, parser included", retriever, "analyse_query"),
          ("offline model answers", OfflineModel, "answer"),
+         ("  its prompt reading (read_prompt)", offline_model, "read_prompt"),
+         ("  its ranking experts (tasks.rank)", tasks, "rank"),
+         ("  its spatial expert (spatial.rank)", spatial, "rank"),
+         ("  the spatial expert's scene read", spatial, "_read_scene"),
          ("prompt rendering (Jinja)", calls.Session, "render"),
          ("prompt hashes for the trace", calls, "prompt_sha256"),
          ("expert replies read", calls.Session, "ranking"),
@@ -97,8 +104,26 @@ async def served(asked: list[str], rounds: int = 3) -> float:
     return statistics.median(per_round)
 
 
-def parser_batches(texts: list[str]) -> tuple[float, float]:
-    """CPU ms per sentence of the parser one at a time and in `nlp.pipe` batches of 40."""
+async def burst_path(store, asked: list[str]) -> tuple[float, float]:
+    """CPU ms per query of the burst path in one thread: `parse_queries` over batches of 40 of
+    `asked` (none parsed before), then `Retriever.aask` of each (its parse memoised)."""
+    r = Retriever(store, provider="offline", method="mtefr")
+    await r.aask("a cosy blue wooden seat for reading near the window in the living room")
+    analyse_query.cache_clear()
+    parse.parse_request.cache_clear()
+    t0 = time.process_time()
+    for i in range(0, len(asked), 40):
+        parse_queries(asked[i:i + 40])
+    parsed = (time.process_time() - t0) * 1000 / len(asked)
+    t0 = time.process_time()
+    for q in asked:
+        await r.aask(q)
+    return parsed, (time.process_time() - t0) * 1000 / len(asked)
+
+
+def parser_batches(texts: list[str]) -> tuple[float, float, dict[str, tuple[float, float]]]:
+    """CPU ms per sentence of the parser one at a time and in `nlp.pipe` batches of 40, and per
+    component (name -> (one at a time, batched))."""
     nlp = parse._pipeline()
     t0 = time.process_time()
     for text in texts:
@@ -106,7 +131,23 @@ def parser_batches(texts: list[str]) -> tuple[float, float]:
     one = (time.process_time() - t0) * 1000 / len(texts)
     t0 = time.process_time()
     list(nlp.pipe(texts, batch_size=40))
-    return one, (time.process_time() - t0) * 1000 / len(texts)
+    batched = (time.process_time() - t0) * 1000 / len(texts)
+    alone = collections.Counter()
+    for text in texts:
+        doc = nlp.make_doc(text)
+        for name, component in nlp.pipeline:
+            t0 = time.process_time()
+            doc = component(doc)
+            alone[name] += time.process_time() - t0
+    together = {}
+    docs = [nlp.make_doc(text) for text in texts]
+    for name, component in nlp.pipeline:
+        t0 = time.process_time()
+        docs = list(component.pipe(docs, batch_size=40))
+        together[name] = time.process_time() - t0
+    per_component = {name: (alone[name] * 1000 / len(texts), together[name] * 1000 / len(texts))
+                     for name in nlp.pipe_names}
+    return one, batched, per_component
 
 
 def main() -> None:
@@ -114,15 +155,19 @@ def main() -> None:
     asked = pool[40:160]  # bench_server's burst queries
     first, again, parts = asyncio.run(retrieval_alone(MapStore(open_map("apartment")), asked))
     repeated = asyncio.run(served(asked))
-    one, batched = parser_batches([parse.normalise(q) for q in pool])
+    one, batched, per_component = parser_batches([parse.normalise(q) for q in pool])
+    parsed, retrieved = asyncio.run(burst_path(MapStore(open_map("apartment")), asked))
     print(f"{len(asked)} queries (bench_server's bursts), CPU ms per query, one thread, no HTTP:")
     print(f"  retrieval (Retriever.aask, model inline): first time {first:.2f}, repeated {again:.2f}")
     for label, ms in parts.most_common():
         print(f"    {label:<36} {ms:6.2f}")
     print(f"  MapService.find_goal on its worker pool, repeated queries, all threads: {repeated:.2f} "
           f"(server's own share over the retrieval: {repeated - again:+.2f})")
+    print(f"  burst path: parse_queries in batches of 40 {parsed:.2f}, then retrieval {retrieved:.2f}")
     print(f"  English parser: one sentence at a time {one:.2f} ms, nlp.pipe in batches of 40 {batched:.2f} ms "
-          f"({len(pool)} suite queries)")
+          f"({len(pool)} suite queries); per component, alone / batched:")
+    for name, (alone_ms, batch_ms) in per_component.items():
+        print(f"    {name:<36} {alone_ms:6.3f} / {batch_ms:6.3f}")
 
 
 if __name__ == "__main__":

@@ -31,6 +31,7 @@ from ..store import MapStore
 from ..store import mapstore as mapstore_module
 from ..store.model import Id, Metres
 from ..store.tools import function_schema
+from .batching import ParseBatcher
 from .results import FindGoalResult, Ranked, argument_problem, place
 from .workers import OffLoopModel, WorkerPool, new_query
 
@@ -64,6 +65,7 @@ class MapService:
         self._retrievers: dict[tuple[str, str, str], Any] = {}
         self._planners: dict[str, Any] = {}
         self._tools: list[Callable[..., Any]] | None = None
+        self._parses = ParseBatcher()  # queries arriving together are parsed together
 
     @classmethod
     def open(cls, refs: list[str], providers: tuple[str, ...] = ("offline",)) -> "MapService":
@@ -175,11 +177,14 @@ class MapService:
 
         check_query(query)
         retriever = self.retriever(map, method, provider)
+        self._parses.arrived(query)
         if isinstance(retriever.model, OffLoopModel):
             async with self._admission():  # first come, first served on the worker pool
+                self._parses.parse(query)  # with the queries waiting behind it
                 new_query()  # this query's model calls go to the pool as one job
                 res = await retriever.aask(query)
         else:
+            self._parses.parse(query)
             res = await retriever.aask(query)
         failed_calls = [c for c in res.calls if c.error]
         if res.calls and len(failed_calls) == len(res.calls):

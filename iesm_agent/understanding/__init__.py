@@ -5,8 +5,8 @@ encoder."""
 
 from .grounding import ground_query
 from .labels import Record, candidate_from_line, label_concepts, room_of, text_slots
-from .query import QueryInfo, analyse_query
+from .query import QueryInfo, analyse_query, parse_queries
 from .text import Slot, stem
 
 __all__ = ["QueryInfo", "Record", "Slot", "analyse_query", "candidate_from_line", "ground_query",
-           "label_concepts", "room_of", "stem", "text_slots"]
+           "label_concepts", "parse_queries", "room_of", "stem", "text_slots"]

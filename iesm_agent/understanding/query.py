@@ -10,7 +10,7 @@ from types import MappingProxyType, SimpleNamespace
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
-from .parse import NOUNS, Structure, Word, normalise, parse_request
+from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
 from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
@@ -284,6 +284,12 @@ def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target
         at = getattr(reading.surface[target.head.end - 1], "at", None)
         word = None if at is None else reading.structure.index_at(at)
     return _Target(target.start, target.end, target.head, word)
+
+
+def parse_queries(texts: list[str]) -> None:
+    """Parse the requests `texts` together (`parse_many`), for `analyse_query` to find memoised."""
+    lex = load_lexicon()
+    parse_many([normalise(lex.respell(t)) for t in texts])
 
 
 @lru_cache(maxsize=4096)

@@ -1,0 +1,57 @@
+"""Interleaved A/B of `bench_server.py`'s measurement on two or more source trees: each round starts
+each tree's `iesm serve` in turn (the tree as working directory, so its `iesm_agent` is the one
+imported) and measures 40 first-time calls one by one and three bursts of 40 first-time queries
+against the SDK floor, embeddings as installed. Per round and tree it prints the server's CPU per
+call in the bursts, the bursts' p50 over the floor's, and the one-by-one p50; then the medians.
+On a shared machine only figures from the same rounds compare.
+
+A tree of an older commit: `git archive <commit> | tar -x -C DIR`.
+
+Run from the repository root (not part of `make bench`: it reports differences, no target):
+HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/server_ab.py --rounds 4 DIR_BEFORE .
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import os
+import statistics
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent))
+import bench_server  # noqa: E402
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("trees", nargs="+", type=Path)
+    parser.add_argument("--rounds", type=int, default=4)
+    args = parser.parse_args()
+    env = {**os.environ, "HF_HUB_OFFLINE": "1"}
+    env.pop("IESM_EMBEDDINGS", None)
+    pool = bench_server.queries()
+    sequential, rest = pool[:40], pool[40:]
+    bursts = [rest[i * 40:(i + 1) * 40] for i in range(3)]
+    figures: dict[Path, list[dict]] = {tree: [] for tree in args.trees}
+    with bench_server.noop_server() as floor:
+        for r in range(args.rounds):
+            for tree in args.trees:
+                bench_server.REPO = tree.resolve()
+                with contextlib.redirect_stdout(io.StringIO()):
+                    out = bench_server.run_config(env, sequential, bursts, floor, cold=False)
+                figures[tree].append(out)
+                print(f"round {r} {tree}: server CPU per call {out['burst_server_cpu_ms']:.2f} ms, burst p50 "
+                      f"{out['burst_p50']:.0f} ms / floor {out['floor_p50']:.0f} ms = {out['floor_ratio']:.2f}x, "
+                      f"one by one p50 {out['p50_first']:.1f} ms", flush=True)
+    for tree, outs in figures.items():
+        print(f"{tree}: medians over {args.rounds} rounds: server CPU per call "
+              f"{statistics.median(o['burst_server_cpu_ms'] for o in outs):.2f} ms, ratio "
+              f"{statistics.median(o['floor_ratio'] for o in outs):.2f}x, one by one p50 "
+              f"{statistics.median(o['p50_first'] for o in outs):.1f} ms")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,60 @@
+"""Check that the English parser reads every suite text the same in `nlp.pipe` batches (as
+`iesm serve` parses the queries waiting together) as one sentence at a time: every token's text,
+offset, head, dependency, part of speech, tag, lemma and sentence start, for batches of the given
+sizes in random compositions. Prints the texts that differ; exit 1 if any does.
+
+Run from the repository root: .venv/bin/python scripts/check_parse_batching.py [SIZE ...]
+(default sizes 2 7 40 64; the referring corpus in ../shared/data/referring_dev when present).
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import sys
+from pathlib import Path
+
+from iesm_agent.lexicon import load_lexicon
+from iesm_agent.understanding import parse
+
+REPO = Path(__file__).resolve().parents[1]
+REFERRING = REPO.parent / "shared" / "data" / "referring_dev"
+
+
+def suite_texts() -> list[str]:
+    """Every query of the shipped suites, the blind rounds and the referring corpus, spelt and
+    normalised as the reading parses it, each once."""
+    paths = [*sorted((REPO / "evals").glob("*.jsonl")), *sorted((REPO / "evals" / "blind").glob("round*.jsonl")),
+             *(REFERRING / f"{stem}.jsonl" for stem in ("scanrefer_dev", "nr3d_dev"))]
+    lex = load_lexicon()
+    texts = [json.loads(line).get("query") for path in paths if path.is_file()
+             for line in path.read_text().splitlines() if line.strip()]
+    return list(dict.fromkeys(parse.normalise(lex.respell(t)) for t in texts if t))
+
+
+def tokens(doc) -> list[tuple]:
+    return [(t.text, t.idx, t.head.i, t.dep_, t.pos_, t.tag_, t.lemma_, t.is_sent_start) for t in doc]
+
+
+def main() -> None:
+    sizes = [int(a) for a in sys.argv[1:]] or [2, 7, 40, 64]
+    texts = suite_texts()
+    nlp = parse._pipeline()
+    alone = [tokens(nlp(t)) for t in texts]
+    differ = 0
+    for size in sizes:
+        order = list(range(len(texts)))
+        random.Random(size).shuffle(order)
+        changed = []
+        for i in range(0, len(order), size):
+            chunk = order[i:i + size]
+            for k, doc in zip(chunk, nlp.pipe([texts[k] for k in chunk], batch_size=size)):
+                if tokens(doc) != alone[k]:
+                    changed.append(texts[k])
+        print(f"batches of {size}: {len(changed)} of {len(texts)} texts parsed differently", *changed[:5], sep="\n  ")
+        differ += len(changed)
+    sys.exit(1 if differ else 0)
+
+
+if __name__ == "__main__":
+    main()
