@@ -56,16 +56,20 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     if np.count_nonzero(total) < 2:
         return [mask]
     sigma = config.split_smoothing / cell_size
-    smooth = np.stack([cv2.GaussianBlur(e, (0, 0), sigma) for e in evidence]) if sigma > 0 else evidence
-    choice = np.where(mask & (smooth.max(axis=0) > 0), smooth.argmax(axis=0), -1)
+    best, choice = np.zeros(mask.shape, np.float32), np.full(mask.shape, -1, np.int32)
+    for label in np.flatnonzero(total).tolist():  # a label without evidence smooths to zero: never chosen
+        smooth = cv2.GaussianBlur(evidence[label], (0, 0), sigma) if sigma > 0 else evidence[label]
+        better = smooth > best  # strictly: ties go to the lower label, as argmax
+        best[better], choice[better] = smooth[better], label
+    choice[~mask] = -1
     parts = np.full(mask.shape, -1, np.int32)
     count = 0
-    for label in np.unique(choice[choice >= 0]).tolist():
+    for label in _present(choice[mask]).tolist():
         n, comp = cv2.connectedComponents((choice == label).astype(np.uint8), connectivity=4)
         parts[comp > 0] = comp[comp > 0] - 1 + count
         count += n - 1
     parts = _absorb_small(parts, mask, config.min_room_area / cell_size ** 2)
-    ids = np.unique(parts[mask])
+    ids = _present(parts[mask])
     if len(ids) < 2:
         return [mask]
     part_masks = [parts == part for part in ids.tolist()]
@@ -86,6 +90,11 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     return ([rest] if rest.any() else []) + alone
 
 
+def _present(ids: np.ndarray) -> np.ndarray:
+    """The distinct values >= 0 of an int array of ids >= -1, ascending (np.unique without the sort)."""
+    return np.flatnonzero(np.bincount(ids.ravel() + 1)[1:]) if ids.size else np.zeros(0, np.int64)
+
+
 def _absorb_small(parts: np.ndarray, mask: np.ndarray, min_cells: float) -> np.ndarray:
     """`parts` (h, w) int32 part id per cell of `mask` (-1: no part) with every part smaller than
     `min_cells`, and every unassigned cell, joined to the neighbouring part with the longest shared
@@ -96,7 +105,9 @@ def _absorb_small(parts: np.ndarray, mask: np.ndarray, min_cells: float) -> np.n
     parts = parts.copy()
     stuck: set[int] = set()
     while True:
-        ids, sizes = np.unique(parts[mask], return_counts=True)
+        counts = np.bincount(parts[mask] + 1)
+        ids = np.flatnonzero(counts) - 1  # part ids present, ascending, -1 (no part) first
+        sizes = counts[ids + 1]
         small = [(size, part) for part, size in zip(ids.tolist(), sizes.tolist())
                  if (part < 0 or size < min_cells) and part not in stuck]
         if not small or len(ids) < 2:
@@ -159,9 +170,8 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
                 parent.append(room)
                 n_rooms += 1
     room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
-    votes = None if object_evidence is None else config.object_vote_weight * object_evidence
-    room_map, room_labels = _merge_alike_parts(room_map, _majority_labels(room_map, labels, n_rooms, n_labels, votes),
-                                               parent)
+    room_labels = _majority_labels(room_map, labels, n_rooms, n_labels, object_evidence, config.object_vote_weight)
+    room_map, room_labels = _merge_alike_parts(room_map, room_labels, parent)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
                             boundaries=boundaries, notes=list(boundaries.notes))
@@ -170,20 +180,12 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
 def _room_boxes(room_map: np.ndarray, n_rooms: int) -> list[tuple[int, int, int, int, int]]:
     """(cells, row0, row1, col0, col1) of each room 0..n_rooms-1 of `room_map` (h, w), one pass
     over the map; (0, 0, 0, 0, 0) for a room without cells."""
-    rows, cols = np.nonzero(room_map >= 0)
-    ids = room_map[rows, cols]
-    counts = np.bincount(ids, minlength=n_rooms)
-    order = np.argsort(ids, kind="stable")
-    rows, cols = rows[order], cols[order]
-    starts = np.concatenate(([0], np.cumsum(counts)[:-1]))
-    boxes = []
-    for room in range(n_rooms):
-        if counts[room] == 0:
-            boxes.append((0, 0, 0, 0, 0))
-            continue
-        r, c = rows[starts[room]:starts[room] + counts[room]], cols[starts[room]:starts[room] + counts[room]]
-        boxes.append((int(counts[room]), int(r.min()), int(r.max()) + 1, int(c.min()), int(c.max()) + 1))
-    return boxes
+    from scipy import ndimage
+
+    counts = np.bincount(room_map.ravel() + 1, minlength=n_rooms + 1)[1:]
+    boxes = ndimage.find_objects(room_map + 1, max_label=n_rooms)
+    return [(int(size), box[0].start, box[0].stop, box[1].start, box[1].stop) if box is not None else (0, 0, 0, 0, 0)
+            for size, box in zip(counts.tolist(), boxes)]
 
 
 def _merge_alike_parts(room_map: np.ndarray, room_labels: np.ndarray, parent: list[int]) -> tuple[np.ndarray, np.ndarray]:
@@ -250,13 +252,15 @@ def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, 
 
 
 def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
-                     votes: Optional[np.ndarray] = None) -> np.ndarray:
-    """(R,) label index with the most evidence in each room: its per-cell labels, plus the summed
-    (L, H, W) object `votes` over its cells when given (the split's evidence); -1 for a room with none."""
+                     votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
+    """(R,) label index with the most evidence in each room: its per-cell labels, plus `vote_weight`
+    x the (L, H, W) object `votes` summed over its cells when given (the split's evidence); -1 for a
+    room with none."""
     both = (room_map >= 0) & (labels >= 0)
     counts = np.bincount(room_map[both] * n_labels + labels[both],
                          minlength=n_rooms * n_labels).reshape(n_rooms, n_labels).astype(np.float64)
     if votes is not None:
-        inside = room_map >= 0
-        counts += np.stack([np.bincount(room_map[inside], weights=v[inside], minlength=n_rooms) for v in votes], axis=1)
+        voted = (room_map >= 0) & votes.any(axis=0)  # cells without votes add nothing
+        counts += np.stack([np.bincount(room_map[voted], weights=vote_weight * v[voted], minlength=n_rooms)
+                            for v in votes], axis=1)
     return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)
