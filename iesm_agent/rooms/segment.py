@@ -12,8 +12,9 @@ labels plus the votes of room-typical objects, as in the split).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import Callable, NamedTuple, Optional
 
 import numpy as np
 
@@ -36,7 +37,8 @@ class RoomSegmentation:
 
 
 def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndarray], n_labels: int,
-                 cell_size: float, config: RoomConfig) -> list[np.ndarray]:
+                 cell_size: float, config: RoomConfig,
+                 beside: Optional[Callable[[], Optional[Neighbours]]] = None) -> list[np.ndarray]:
     """Cut a room `mask` (h, w) into label-coherent parts; returns disjoint masks (just `mask` when
     no cut pays). Each cell takes the label with the most evidence (per-cell `labels` (h, w), plus
     `object_vote_weight` x the object evidence `objects` (L, h, w)) within a Gaussian of
@@ -55,13 +57,7 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     total = evidence.sum(axis=(1, 2))
     if np.count_nonzero(total) < 2:
         return [mask]
-    sigma = config.split_smoothing / cell_size
-    best, choice = np.zeros(mask.shape, np.float32), np.full(mask.shape, -1, np.int32)
-    for label in np.flatnonzero(total).tolist():  # a label without evidence smooths to zero: never chosen
-        smooth = cv2.GaussianBlur(evidence[label], (0, 0), sigma) if sigma > 0 else evidence[label]
-        better = smooth > best  # strictly: ties go to the lower label, as argmax
-        best[better], choice[better] = smooth[better], label
-    choice[~mask] = -1
+    choice = _smoothed_choice(evidence, mask, config.split_smoothing / cell_size)
     parts = np.full(mask.shape, -1, np.int32)
     count = 0
     for label in _present(choice[mask]).tolist():
@@ -74,12 +70,32 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
         return [mask]
     part_masks = [parts == part for part in ids.tolist()]
     part_evidence = np.stack([evidence[:, part].sum(axis=1) for part in part_masks])  # (P, L)
+    major, own = int(total.argmax()), part_evidence.argmax(axis=1)
+    near = beside() if beside is not None and (own != major).any() else None
+    if near is not None:
+        # a part labelled as a room behind the wall it borders, a room with more evidence of that
+        # label than the part has, is most likely that room seen through the opening between them
+        # (a view's label spills over what it sees): it joins its own room's part it shares the
+        # longest border with. A part touching that room, nothing between them, is a piece of it.
+        seen = []
+        for k, part in enumerate(part_masks):
+            same = part & (near.label == own[k])
+            if (own[k] != major and same.any() and not (near.distance[same] <= 1).any()
+                    and near.evidence[same].max() > part_evidence[k, own[k]]):
+                seen.append(k)
+        if seen:
+            parts = _join_neighbours(parts, mask, [int(ids[k]) for k in seen])
+            ids = _present(parts[mask])
+            if len(ids) < 2:
+                return [mask]
+            part_masks = [parts == part for part in ids.tolist()]
+            part_evidence = np.stack([evidence[:, part].sum(axis=1) for part in part_masks])
     if (part_evidence.max(axis=1).sum() - total.max()) / total.sum() >= config.split_gain:
         return part_masks
     # a small room inside a large one holds too little of the evidence for that test; it stands
     # alone when its own label beats the room's majority inside it by `split_gain` of its evidence
     # and objects typical of its label stand in it
-    major, own = int(total.argmax()), part_evidence.argmax(axis=1)
+    own = part_evidence.argmax(axis=1)
     margin = (part_evidence.max(axis=1) - part_evidence[:, major]) / np.maximum(part_evidence.sum(axis=1), 1e-9)
     alone = [part for k, part in enumerate(part_masks)
              if own[k] != major and margin[k] >= config.split_gain and objects is not None
@@ -88,6 +104,38 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
         return [mask]
     rest = mask & ~np.logical_or.reduce(alone)
     return ([rest] if rest.any() else []) + alone
+
+
+def _smoothed_choice(evidence: np.ndarray, mask: np.ndarray, sigma: float) -> np.ndarray:
+    """(h, w) int32: per cell of `mask`, the label whose (L, h, w) float32 `evidence` is largest
+    after a Gaussian of `sigma` cells (OpenCV's, over the box), the lower label on ties; -1 where
+    no label has any (and off `mask`). Labels without evidence are not smoothed (they stay zero)."""
+    import cv2
+
+    best, choice = np.zeros(mask.shape, np.float32), np.full(mask.shape, -1, np.int32)
+    for label in np.flatnonzero(evidence.any(axis=(1, 2))).tolist():
+        smooth = cv2.GaussianBlur(evidence[label], (0, 0), sigma) if sigma > 0 else evidence[label]
+        better = smooth > best  # strictly: a tie keeps the lower label
+        best[better], choice[better] = smooth[better], label
+    choice[~mask] = -1
+    return choice
+
+
+def _join_neighbours(parts: np.ndarray, mask: np.ndarray, joining: list[int]) -> np.ndarray:
+    """`parts` (h, w) int32 part id per cell of `mask` with each part in `joining` given to the
+    neighbouring part outside `joining` it shares the longest border with (kept when it has none)."""
+    import cv2
+
+    cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))
+    parts = parts.copy()
+    staying = mask & ~np.isin(parts, joining)
+    for part in joining:
+        own = mask & (parts == part)
+        ring = cv2.dilate(own.astype(np.uint8), cross).astype(bool) & staying
+        if ring.any():
+            neighbours, border = np.unique(parts[ring], return_counts=True)
+            parts[own] = neighbours[np.argmax(border)]
+    return parts
 
 
 def _present(ids: np.ndarray) -> np.ndarray:
@@ -160,12 +208,16 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
     parent = list(range(n_rooms))  # the free component each room comes from
     if config.split and n_labels >= 2:
+        around = RoomsAround(room_map.copy(), labels, n_rooms, n_labels, object_evidence, config.object_vote_weight,
+                             margin)
         for room, (size, r0, r1, c0, c1) in enumerate(_room_boxes(room_map, n_rooms)):
             if size * cell_area < config.split_min_area:
                 continue
+            beside = functools.partial(around.near, room, (r0, r1, c0, c1))
             crop = room_map[r0:r1, c0:c1]
             objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
-            for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config)[1:]:
+            for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config,
+                                     beside)[1:]:
                 crop[part] = n_rooms
                 parent.append(room)
                 n_rooms += 1
@@ -186,6 +238,52 @@ def _room_boxes(room_map: np.ndarray, n_rooms: int) -> list[tuple[int, int, int,
     boxes = ndimage.find_objects(room_map + 1, max_label=n_rooms)
     return [(int(size), box[0].start, box[0].stop, box[1].start, box[1].stop) if box is not None else (0, 0, 0, 0, 0)
             for size, box in zip(counts.tolist(), boxes)]
+
+
+class Neighbours(NamedTuple):
+    """Around one room, per cell of its box (h, w): `label` (int32) the label index of the nearest
+    other room, -1 where none is within reach; `distance` (float32) to it in cells (1: the rooms
+    touch, nothing between them); `evidence` (float64) that room's evidence for its label."""
+
+    label: np.ndarray
+    distance: np.ndarray
+    evidence: np.ndarray
+
+
+class RoomsAround:
+    """The rooms before any cut (`room_map` (H, W) ids 0..n_rooms-1), asked for the other rooms
+    within `reach` cells of one of them; their evidence (`_room_evidence` of the per-cell `labels`
+    and object `votes`) is summed on the first question (the split asks only when a part takes a
+    label other than its room's)."""
+
+    def __init__(self, room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
+                 votes: Optional[np.ndarray], vote_weight: float, reach: int):
+        self.room_map, self.reach = room_map, reach
+        self._evidence = functools.partial(_room_evidence, room_map, labels, n_rooms, n_labels, votes, vote_weight)
+        self._summed: Optional[np.ndarray] = None
+
+    def near(self, room: int, box: tuple[int, int, int, int]) -> Optional[Neighbours]:
+        """`_neighbours` of `room` over its `box` (row0, row1, col0, col1)."""
+        if self._summed is None:
+            self._summed = self._evidence()
+        return _neighbours(self.room_map, room, self._summed, box, self.reach)
+
+
+def _neighbours(room_map: np.ndarray, room: int, room_evidence: np.ndarray, box: tuple[int, int, int, int],
+                reach: int) -> Optional[Neighbours]:
+    """The other rooms of `room_map` within `reach` cells of `room`'s `box` (row0, row1, col0,
+    col1), each labelled by its largest (R, L) `room_evidence`; None when none is that near."""
+    r0, r1, c0, c1 = box
+    w0, w1, v0, v1 = max(r0 - reach, 0), min(r1 + reach, room_map.shape[0]), max(c0 - reach, 0), min(c1 + reach, room_map.shape[1])
+    window = room_map[w0:w1, v0:v1]
+    others = np.where(window == room, -1, window)
+    if not (others >= 0).any():
+        return None
+    distance, nearest = _nearest_room(others)
+    crop = (slice(r0 - w0, r1 - w0), slice(c0 - v0, c1 - v0))
+    label = np.where(room_evidence.any(axis=1), room_evidence.argmax(axis=1), -1)[nearest]
+    return Neighbours(np.where(distance <= reach, label, -1)[crop], distance[crop],
+                      room_evidence.max(axis=1)[nearest][crop])
 
 
 def _merge_alike_parts(room_map: np.ndarray, room_labels: np.ndarray, parent: list[int]) -> tuple[np.ndarray, np.ndarray]:
@@ -235,27 +333,33 @@ def _grow(room_map: np.ndarray, allowed: np.ndarray, steps: int) -> np.ndarray:
 def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, max_cells: float) -> np.ndarray:
     """Give unassigned cells the id of the nearest room (Euclidean): `anywhere` cells at any
     distance, `near` cells within `max_cells`."""
-    import cv2
-
     unassigned = room_map < 0
     if unassigned.all() or not unassigned.any():
         return room_map
-    distance, nearest = cv2.distanceTransformWithLabels(unassigned.astype(np.uint8), cv2.DIST_L2, 5,
-                                                        labelType=cv2.DIST_LABEL_PIXEL)
+    distance, nearest = _nearest_room(room_map)
     fill = unassigned & (anywhere | (near & (distance <= max_cells)))
-    inside = ~unassigned
-    lut = np.full(int(nearest.max()) + 1, -1, np.int32)
-    lut[nearest[inside]] = room_map[inside]
     out = room_map.copy()
-    out[fill] = lut[nearest[fill]]
+    out[fill] = nearest[fill]
     return out
 
 
-def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
-                     votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
-    """(R,) label index with the most evidence in each room: its per-cell labels, plus `vote_weight`
-    x the (L, H, W) object `votes` summed over its cells when given (the split's evidence); -1 for a
-    room with none."""
+def _nearest_room(room_map: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(distance in cells, id) of the nearest cell with a room (id >= 0) of `room_map` (h, w), for
+    every cell (Euclidean, OpenCV's 5x5 mask; a room's own cells: 0 and their id). Needs a room cell."""
+    import cv2
+
+    inside = room_map >= 0
+    distance, nearest = cv2.distanceTransformWithLabels((~inside).astype(np.uint8), cv2.DIST_L2, 5,
+                                                        labelType=cv2.DIST_LABEL_PIXEL)
+    lut = np.full(int(nearest.max()) + 1, -1, np.int32)
+    lut[nearest[inside]] = room_map[inside]
+    return distance, lut[nearest]
+
+
+def _room_evidence(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
+                   votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
+    """(R, L) float64 evidence of each label in each room: its per-cell labels, plus `vote_weight`
+    x the (L, H, W) object `votes` summed over its cells when given (the split's evidence)."""
     both = (room_map >= 0) & (labels >= 0)
     counts = np.bincount(room_map[both] * n_labels + labels[both],
                          minlength=n_rooms * n_labels).reshape(n_rooms, n_labels).astype(np.float64)
@@ -263,4 +367,11 @@ def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_l
         voted = (room_map >= 0) & votes.any(axis=0)  # cells without votes add nothing
         counts += np.stack([np.bincount(room_map[voted], weights=vote_weight * v[voted], minlength=n_rooms)
                             for v in votes], axis=1)
+    return counts
+
+
+def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
+                     votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
+    """(R,) label index with the most evidence (`_room_evidence`) in each room; -1 for a room with none."""
+    counts = _room_evidence(room_map, labels, n_rooms, n_labels, votes, vote_weight)
     return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)
