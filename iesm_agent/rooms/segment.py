@@ -53,19 +53,21 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     inside = mask & (labels >= 0)
     evidence = np.stack([(inside & (labels == label)).astype(np.float32) for label in range(n_labels)])
     if objects is not None:
-        evidence += config.object_vote_weight * objects * mask
+        voted = mask & objects.any(axis=0)  # elsewhere the votes add nothing
+        evidence[:, voted] += config.object_vote_weight * objects[:, voted]
     total = evidence.sum(axis=(1, 2))
     if np.count_nonzero(total) < 2:
         return [mask]
     choice = _smoothed_choice(evidence, mask, config.split_smoothing / cell_size)
     parts = np.full(mask.shape, -1, np.int32)
     count = 0
-    for label in _present(choice[mask]).tolist():
+    for label in _present(choice).tolist():  # -1 off the mask
         n, comp = cv2.connectedComponents((choice == label).astype(np.uint8), connectivity=4)
-        parts[comp > 0] = comp[comp > 0] - 1 + count
+        found = comp > 0
+        parts[found] = comp[found] + (count - 1)
         count += n - 1
     parts = _absorb_small(parts, mask, config.min_room_area / cell_size ** 2)
-    ids = _present(parts[mask])
+    ids = _present(parts)  # -1 off the mask
     if len(ids) < 2:
         return [mask]
     part_masks = [parts == part for part in ids.tolist()]
@@ -85,7 +87,7 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
                 seen.append(k)
         if seen:
             parts = _join_neighbours(parts, mask, [int(ids[k]) for k in seen])
-            ids = _present(parts[mask])
+            ids = _present(parts)  # -1 off the mask
             if len(ids) < 2:
                 return [mask]
             part_masks = [parts == part for part in ids.tolist()]
@@ -115,8 +117,8 @@ def _smoothed_choice(evidence: np.ndarray, mask: np.ndarray, sigma: float) -> np
     best, choice = np.zeros(mask.shape, np.float32), np.full(mask.shape, -1, np.int32)
     for label in np.flatnonzero(evidence.any(axis=(1, 2))).tolist():
         smooth = cv2.GaussianBlur(evidence[label], (0, 0), sigma) if sigma > 0 else evidence[label]
-        better = smooth > best  # strictly: a tie keeps the lower label
-        best[better], choice[better] = smooth[better], label
+        choice[smooth > best] = label  # strictly: a tie keeps the lower label
+        np.maximum(best, smooth, out=best)
     choice[~mask] = -1
     return choice
 
@@ -208,14 +210,16 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
     parent = list(range(n_rooms))  # the free component each room comes from
     if config.split and n_labels >= 2:
-        around = RoomsAround(room_map.copy(), labels, n_rooms, n_labels, object_evidence, config.object_vote_weight,
+        boxes = _room_boxes(room_map, n_rooms)
+        voted = None if object_evidence is None else object_evidence.any(axis=0)
+        around = RoomsAround(room_map.copy(), boxes, labels, n_labels, object_evidence, config.object_vote_weight,
                              margin)
-        for room, (size, r0, r1, c0, c1) in enumerate(_room_boxes(room_map, n_rooms)):
+        for room, (size, r0, r1, c0, c1) in enumerate(boxes):
             if size * cell_area < config.split_min_area:
                 continue
-            beside = functools.partial(around.near, room, (r0, r1, c0, c1))
+            beside = functools.partial(around.near, room)
             crop = room_map[r0:r1, c0:c1]
-            objects = None if object_evidence is None else object_evidence[:, r0:r1, c0:c1]
+            objects = None if voted is None or not voted[r0:r1, c0:c1].any() else object_evidence[:, r0:r1, c0:c1]
             for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config,
                                      beside)[1:]:
                 crop[part] = n_rooms
@@ -251,39 +255,46 @@ class Neighbours(NamedTuple):
 
 
 class RoomsAround:
-    """The rooms before any cut (`room_map` (H, W) ids 0..n_rooms-1), asked for the other rooms
-    within `reach` cells of one of them; their evidence (`_room_evidence` of the per-cell `labels`
-    and object `votes`) is summed on the first question (the split asks only when a part takes a
-    label other than its room's)."""
+    """The rooms before any cut (`room_map` (H, W) ids 0..R-1, `boxes` from `_room_boxes`), asked
+    for the other rooms within `reach` cells of one of them. A room's evidence (`_room_evidence` of
+    the per-cell `labels` and object `votes`) is summed over its box when first asked for (the split
+    asks only when a part takes a label other than its room's)."""
 
-    def __init__(self, room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
-                 votes: Optional[np.ndarray], vote_weight: float, reach: int):
-        self.room_map, self.reach = room_map, reach
-        self._evidence = functools.partial(_room_evidence, room_map, labels, n_rooms, n_labels, votes, vote_weight)
-        self._summed: Optional[np.ndarray] = None
+    def __init__(self, room_map: np.ndarray, boxes: list[tuple[int, int, int, int, int]], labels: np.ndarray,
+                 n_labels: int, votes: Optional[np.ndarray], vote_weight: float, reach: int):
+        self.room_map, self.boxes, self.labels, self.n_labels = room_map, boxes, labels, n_labels
+        self.votes, self.vote_weight, self.reach = votes, vote_weight, reach
+        self._evidence: dict[int, np.ndarray] = {}
 
-    def near(self, room: int, box: tuple[int, int, int, int]) -> Optional[Neighbours]:
-        """`_neighbours` of `room` over its `box` (row0, row1, col0, col1)."""
-        if self._summed is None:
-            self._summed = self._evidence()
-        return _neighbours(self.room_map, room, self._summed, box, self.reach)
+    def evidence(self, room: int) -> np.ndarray:
+        """(L,) float64 evidence of each label in `room`."""
+        if room not in self._evidence:
+            _, r0, r1, c0, c1 = self.boxes[room]
+            own = np.where(self.room_map[r0:r1, c0:c1] == room, 0, -1)
+            votes = None if self.votes is None else self.votes[:, r0:r1, c0:c1]
+            self._evidence[room] = _room_evidence(own, self.labels[r0:r1, c0:c1], 1, self.n_labels, votes,
+                                                  self.vote_weight)[0]
+        return self._evidence[room]
 
-
-def _neighbours(room_map: np.ndarray, room: int, room_evidence: np.ndarray, box: tuple[int, int, int, int],
-                reach: int) -> Optional[Neighbours]:
-    """The other rooms of `room_map` within `reach` cells of `room`'s `box` (row0, row1, col0,
-    col1), each labelled by its largest (R, L) `room_evidence`; None when none is that near."""
-    r0, r1, c0, c1 = box
-    w0, w1, v0, v1 = max(r0 - reach, 0), min(r1 + reach, room_map.shape[0]), max(c0 - reach, 0), min(c1 + reach, room_map.shape[1])
-    window = room_map[w0:w1, v0:v1]
-    others = np.where(window == room, -1, window)
-    if not (others >= 0).any():
-        return None
-    distance, nearest = _nearest_room(others)
-    crop = (slice(r0 - w0, r1 - w0), slice(c0 - v0, c1 - v0))
-    label = np.where(room_evidence.any(axis=1), room_evidence.argmax(axis=1), -1)[nearest]
-    return Neighbours(np.where(distance <= reach, label, -1)[crop], distance[crop],
-                      room_evidence.max(axis=1)[nearest][crop])
+    def near(self, room: int) -> Optional[Neighbours]:
+        """The other rooms within `reach` of `room`, over its box, each labelled by its largest
+        evidence; None when none is that near."""
+        _, r0, r1, c0, c1 = self.boxes[room]
+        reach, (height, width) = self.reach, self.room_map.shape
+        w0, w1, v0, v1 = max(r0 - reach, 0), min(r1 + reach, height), max(c0 - reach, 0), min(c1 + reach, width)
+        window = self.room_map[w0:w1, v0:v1]
+        others = np.where(window == room, -1, window)
+        if not (others >= 0).any():
+            return None
+        distance, nearest = _nearest_room(others)
+        crop = (slice(r0 - w0, r1 - w0), slice(c0 - v0, c1 - v0))
+        distance, nearest = distance[crop], nearest[crop]
+        rooms = _present(np.where(distance <= reach, nearest, -1))
+        label, evidence = np.full(len(self.boxes), -1, np.int64), np.zeros(len(self.boxes))
+        for other in rooms.tolist():
+            counts = self.evidence(other)
+            label[other], evidence[other] = (int(counts.argmax()), counts.max()) if counts.any() else (-1, 0.0)
+        return Neighbours(np.where(distance <= reach, label[nearest], -1), distance, evidence[nearest])
 
 
 def _merge_alike_parts(room_map: np.ndarray, room_labels: np.ndarray, parent: list[int]) -> tuple[np.ndarray, np.ndarray]:
@@ -319,15 +330,15 @@ def _grow(room_map: np.ndarray, allowed: np.ndarray, steps: int) -> np.ndarray:
     cross = cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3))
     todo = allowed & (shifted == 0)
     for _ in range(steps):
-        if not todo.any():
-            break
         grown = cv2.dilate(shifted, cross)
         take = todo & (grown > 0)
         if not take.any():
             break
-        shifted[take] = grown[take]
+        np.copyto(shifted, grown, where=take)
         todo &= ~take
-    return shifted.astype(np.int32) - 1
+    out = shifted.astype(np.int32)
+    out -= 1
+    return out
 
 
 def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, max_cells: float) -> np.ndarray:
@@ -360,9 +371,9 @@ def _room_evidence(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_lab
                    votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
     """(R, L) float64 evidence of each label in each room: its per-cell labels, plus `vote_weight`
     x the (L, H, W) object `votes` summed over its cells when given (the split's evidence)."""
-    both = (room_map >= 0) & (labels >= 0)
-    counts = np.bincount(room_map[both] * n_labels + labels[both],
-                         minlength=n_rooms * n_labels).reshape(n_rooms, n_labels).astype(np.float64)
+    code = room_map * n_labels + labels
+    code[(room_map < 0) | (labels < 0)] = n_rooms * n_labels  # one bin past the rooms' for unlabelled cells
+    counts = np.bincount(code.ravel(), minlength=n_rooms * n_labels + 1)[:-1].reshape(n_rooms, n_labels).astype(np.float64)
     if votes is not None:
         voted = (room_map >= 0) & votes.any(axis=0)  # cells without votes add nothing
         counts += np.stack([np.bincount(room_map[voted], weights=vote_weight * v[voted], minlength=n_rooms)
