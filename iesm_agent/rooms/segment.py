@@ -5,8 +5,9 @@ its 4-connected components, large and observed enough, are room instances; rooms
 geodesically over the boundary margin and the rest of the sealed building (the drawn lines stop
 them); a large room whose smoothed per-cell labels (plus room-typical objects) form separate
 label-coherent parts is cut into them (open plan, and narrow rooms such as a hallway whose own free
-space was too small to be a room and that a neighbour grew into); rooms then take large furniture
-and share the walls between them; each room takes the label with the most evidence (its per-cell
+space was too small to be a room and that a neighbour grew into), except a part that is a room
+behind its wall seen through the door; rooms then take large furniture and share the walls
+between them; each room takes the label with the most evidence (its per-cell
 labels plus the votes of room-typical objects, as in the split).
 """
 
