@@ -39,7 +39,8 @@ class RoomSegmentation:
 
 def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndarray], n_labels: int,
                  cell_size: float, config: RoomConfig,
-                 beside: Optional[Callable[[], Optional[Neighbours]]] = None) -> list[np.ndarray]:
+                 beside: Optional[Callable[[], Optional[Neighbours]]] = None,
+                 voted: Optional[np.ndarray] = None) -> list[np.ndarray]:
     """Cut a room `mask` (h, w) into label-coherent parts; returns disjoint masks (just `mask` when
     no cut pays). Each cell takes the label with the most evidence (per-cell `labels` (h, w), plus
     `object_vote_weight` x the object evidence `objects` (L, h, w)) within a Gaussian of
@@ -54,8 +55,8 @@ def _label_parts(mask: np.ndarray, labels: np.ndarray, objects: Optional[np.ndar
     inside = mask & (labels >= 0)
     evidence = np.stack([(inside & (labels == label)).astype(np.float32) for label in range(n_labels)])
     if objects is not None:
-        voted = mask & objects.any(axis=0)  # elsewhere the votes add nothing
-        evidence[:, voted] += config.object_vote_weight * objects[:, voted]
+        rows, cols = np.nonzero(mask & (objects.any(axis=0) if voted is None else voted))  # elsewhere they add nothing
+        evidence[:, rows, cols] += config.object_vote_weight * objects[:, rows, cols]
     total = evidence.sum(axis=(1, 2))
     if np.count_nonzero(total) < 2:
         return [mask]
@@ -210,11 +211,11 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
     building = _enclosed(walls | boundaries.raster)
     room_map = _grow(room_map, building & open_cells, max(walls.shape))  # the rest of a sealed building
     parent = list(range(n_rooms))  # the free component each room comes from
+    voted = None if object_evidence is None else object_evidence.any(axis=0)  # cells with object votes
     if config.split and n_labels >= 2:
         boxes = _room_boxes(room_map, n_rooms)
-        voted = None if object_evidence is None else object_evidence.any(axis=0)
-        around = RoomsAround(room_map.copy(), boxes, labels, n_labels, object_evidence, config.object_vote_weight,
-                             margin)
+        around = RoomsAround(room_map.copy(), boxes, labels, n_labels, object_evidence, voted,
+                             config.object_vote_weight, margin)
         for room, (size, r0, r1, c0, c1) in enumerate(boxes):
             if size * cell_area < config.split_min_area:
                 continue
@@ -222,12 +223,13 @@ def segment_room_map(walls: np.ndarray, known: np.ndarray, cell_labels: CellLabe
             crop = room_map[r0:r1, c0:c1]
             objects = None if voted is None or not voted[r0:r1, c0:c1].any() else object_evidence[:, r0:r1, c0:c1]
             for part in _label_parts(crop == room, labels[r0:r1, c0:c1], objects, n_labels, cell_size, config,
-                                     beside)[1:]:
+                                     beside, None if voted is None else voted[r0:r1, c0:c1])[1:]:
                 crop[part] = n_rooms
                 parent.append(room)
                 n_rooms += 1
     room_map = _fill_nearest(room_map, furniture, walls | boundaries.raster, config.wall_share / cell_size)
-    room_labels = _majority_labels(room_map, labels, n_rooms, n_labels, object_evidence, config.object_vote_weight)
+    room_labels = _majority_labels(room_map, labels, n_rooms, n_labels, object_evidence, config.object_vote_weight,
+                                   voted)
     room_map, room_labels = _merge_alike_parts(room_map, room_labels, parent)
     return RoomSegmentation(room_map=room_map, labels=[names[i] if i >= 0 else "unknown" for i in room_labels],
                             components=int(keep.sum()), splits=len(room_labels) - int(keep.sum()),
@@ -262,9 +264,10 @@ class RoomsAround:
     asks only when a part takes a label other than its room's)."""
 
     def __init__(self, room_map: np.ndarray, boxes: list[tuple[int, int, int, int, int]], labels: np.ndarray,
-                 n_labels: int, votes: Optional[np.ndarray], vote_weight: float, reach: int):
+                 n_labels: int, votes: Optional[np.ndarray], voted: Optional[np.ndarray], vote_weight: float,
+                 reach: int):
         self.room_map, self.boxes, self.labels, self.n_labels = room_map, boxes, labels, n_labels
-        self.votes, self.vote_weight, self.reach = votes, vote_weight, reach
+        self.votes, self.voted, self.vote_weight, self.reach = votes, voted, vote_weight, reach
         self._evidence: dict[int, np.ndarray] = {}
 
     def evidence(self, room: int) -> np.ndarray:
@@ -272,9 +275,9 @@ class RoomsAround:
         if room not in self._evidence:
             _, r0, r1, c0, c1 = self.boxes[room]
             own = np.where(self.room_map[r0:r1, c0:c1] == room, 0, -1)
-            votes = None if self.votes is None else self.votes[:, r0:r1, c0:c1]
+            votes, voted = (None, None) if self.votes is None else (self.votes[:, r0:r1, c0:c1], self.voted[r0:r1, c0:c1])
             self._evidence[room] = _room_evidence(own, self.labels[r0:r1, c0:c1], 1, self.n_labels, votes,
-                                                  self.vote_weight)[0]
+                                                  self.vote_weight, voted)[0]
         return self._evidence[room]
 
     def near(self, room: int) -> Optional[Neighbours]:
@@ -369,21 +372,25 @@ def _nearest_room(room_map: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _room_evidence(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
-                   votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
+                   votes: Optional[np.ndarray] = None, vote_weight: float = 1.0,
+                   voted: Optional[np.ndarray] = None) -> np.ndarray:
     """(R, L) float64 evidence of each label in each room: its per-cell labels, plus `vote_weight`
-    x the (L, H, W) object `votes` summed over its cells when given (the split's evidence)."""
+    x the (L, H, W) object `votes` summed over its cells when given (the split's evidence; `voted`
+    (H, W) bool: the cells with any vote, found when not given)."""
     code = room_map * n_labels + labels
     code[(room_map < 0) | (labels < 0)] = n_rooms * n_labels  # one bin past the rooms' for unlabelled cells
     counts = np.bincount(code.ravel(), minlength=n_rooms * n_labels + 1)[:-1].reshape(n_rooms, n_labels).astype(np.float64)
-    if votes is not None:
-        voted = (room_map >= 0) & votes.any(axis=0)  # cells without votes add nothing
-        counts += np.stack([np.bincount(room_map[voted], weights=vote_weight * v[voted], minlength=n_rooms)
-                            for v in votes], axis=1)
+    if votes is not None:  # cells without votes add nothing
+        rows, cols = np.nonzero((room_map >= 0) & (votes.any(axis=0) if voted is None else voted))
+        ids = room_map[rows, cols]
+        counts += np.stack([np.bincount(ids, weights=vote_weight * v[rows, cols], minlength=n_rooms) for v in votes],
+                           axis=1)
     return counts
 
 
 def _majority_labels(room_map: np.ndarray, labels: np.ndarray, n_rooms: int, n_labels: int,
-                     votes: Optional[np.ndarray] = None, vote_weight: float = 1.0) -> np.ndarray:
+                     votes: Optional[np.ndarray] = None, vote_weight: float = 1.0,
+                     voted: Optional[np.ndarray] = None) -> np.ndarray:
     """(R,) label index with the most evidence (`_room_evidence`) in each room; -1 for a room with none."""
-    counts = _room_evidence(room_map, labels, n_rooms, n_labels, votes, vote_weight)
+    counts = _room_evidence(room_map, labels, n_rooms, n_labels, votes, vote_weight, voted)
     return np.where(counts.any(axis=1), counts.argmax(axis=1), -1)
