@@ -241,8 +241,9 @@ def _room_boxes(room_map: np.ndarray, n_rooms: int) -> list[tuple[int, int, int,
     over the map; (0, 0, 0, 0, 0) for a room without cells."""
     from scipy import ndimage
 
-    counts = np.bincount(room_map.ravel() + 1, minlength=n_rooms + 1)[1:]
-    boxes = ndimage.find_objects(room_map + 1, max_label=n_rooms)
+    shifted = room_map + 1  # 0: no room
+    counts = np.bincount(shifted.ravel(), minlength=n_rooms + 1)[1:]
+    boxes = ndimage.find_objects(shifted, max_label=n_rooms)
     return [(int(size), box[0].start, box[0].stop, box[1].start, box[1].stop) if box is not None else (0, 0, 0, 0, 0)
             for size, box in zip(counts.tolist(), boxes)]
 
