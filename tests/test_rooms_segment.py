@@ -194,3 +194,67 @@ def test_room_labels_weigh_room_typical_objects_with_the_cell_labels():
     assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [1]
     votes[0, 2:7, 2:7] = 1.0                   # a toilet's and a bathtub's footprint: 25 bathroom votes
     assert _majority_labels(room_map, labels, 1, 2, votes).tolist() == [0]
+
+
+def test_smoothed_choice_is_the_argmax_of_every_label_smoothed():
+    import cv2
+
+    from iesm_agent.rooms.segment import _smoothed_choice
+
+    rng = np.random.default_rng(7)
+    labels = rng.integers(0, 4, (60, 70))      # label 4 of 5 has no evidence at all
+    evidence = np.stack([(labels == k).astype(np.float32) for k in range(5)])
+    evidence[2, 10:20, 10:30] += 0.5 * rng.random((10, 20), dtype=np.float32)
+    evidence[:, 40:, :5] = 0                    # cells without evidence: no choice when far enough
+    mask = np.ones(labels.shape, bool)
+    mask[:3] = False
+    for sigma in (0.0, 1.0, 10.0):
+        smooth = np.stack([cv2.GaussianBlur(e, (0, 0), sigma) if sigma > 0 else e for e in evidence])
+        plain = np.where(mask & (smooth.max(axis=0) > 0), smooth.argmax(axis=0), -1)
+        assert np.array_equal(_smoothed_choice(evidence, mask, sigma), plain)
+
+
+def test_room_boxes_are_each_rooms_cell_count_and_bounds():
+    from iesm_agent.rooms.segment import _room_boxes
+
+    rng = np.random.default_rng(3)
+    room_map = rng.integers(-1, 6, (40, 50)).astype(np.int32)
+    room_map[room_map == 4] = 2                 # room 4 has no cells
+    for room, box in enumerate(_room_boxes(room_map, 7)):
+        rows, cols = np.nonzero(room_map == room)
+        want = (len(rows), rows.min(), rows.max() + 1, cols.min(), cols.max() + 1) if len(rows) else (0, 0, 0, 0, 0)
+        assert box == want
+
+
+def test_room_labels_sum_object_votes_as_the_dense_sum_does():
+    from iesm_agent.rooms.segment import _majority_labels
+
+    rng = np.random.default_rng(5)
+    room_map = rng.integers(-1, 4, (30, 30)).astype(np.int32)
+    labels = rng.integers(-1, 3, (30, 30)).astype(np.int32)
+    votes = np.where(rng.random((3, 30, 30)) < 0.05, rng.random((3, 30, 30)), 0).astype(np.float32)
+    counts = np.zeros((4, 3))
+    for room in range(4):
+        counts[room] = np.bincount(labels[(room_map == room) & (labels >= 0)], minlength=3)
+        counts[room] += (0.7 * votes[:, room_map == room]).sum(axis=1)
+    assert _majority_labels(room_map, labels, 4, 3, votes, 0.7).tolist() == counts.argmax(axis=1).tolist()
+
+
+def test_a_neighbours_label_seen_through_the_door_is_not_cut_out_as_a_room():
+    from iesm_agent.rooms.segment import Neighbours, _label_parts
+
+    truth = np.zeros((100, 100), np.int32)      # a 5 m x 5 m hallway (label 0) whose door side ...
+    truth[60:] = 1                              # ... says living room (label 1), as seen from next door
+    labels = _noisy(truth, 0.2, 2, seed=8)
+    mask = np.ones_like(truth, bool)
+    config = RoomConfig(split_min_area=0)
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config)) == 2   # alone, the labels would cut it
+    near = np.full(truth.shape, -1, np.int32)
+    near[90:] = 1                               # a living room behind the wall below, 0.5 m away ...
+    distance = np.where(near >= 0, 10.0, 99.0).astype(np.float32)
+    strong = np.full(truth.shape, 8000.0)       # ... whose own living-room evidence outweighs the part's
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config, lambda: Neighbours(near, distance, strong))) == 1
+    weak = np.full(truth.shape, 1000.0)         # a small room that only says living room: no spill-over
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config, lambda: Neighbours(near, distance, weak))) == 2
+    distance[90:] = 1.0                         # touching the room (no wall): a piece of it
+    assert len(_label_parts(mask, labels, None, 2, 0.05, config, lambda: Neighbours(near, distance, strong))) == 2

@@ -26,7 +26,9 @@ class RoomConfig(BaseModel):
     of one label form a part, parts under `min_room_area` join their longest-bordering neighbour,
     and the parts are kept when their own majorities explain `split_gain` more of the evidence than
     the room's single majority (or, for a single part, when its own label beats the room's majority
-    inside it by `split_gain` and objects typical of its label stand in it). With the split on,
+    inside it by `split_gain` and objects typical of its label stand in it). A part labelled as a
+    room behind the wall it borders (within the growth margin, not touching it) that holds more
+    evidence of that label than the part is that room seen through the door: it stays. With the split on,
     every room then takes the label with the most evidence (per-cell labels plus
     `object_vote_weight` x object votes); off, the paper's majority per-cell label.
     `split_smoothing`, with the other split settings, was chosen on tuning seeds 0-4 (walled and

@@ -76,6 +76,9 @@ def object_votes(scene: SceneMap, names: list[str]) -> np.ndarray:
         inst_ids = np.array([inst.id for inst in scene.instances], np.int64)
         order = np.argsort(inst_ids)
         rows = order[np.searchsorted(inst_ids[order], ids)]
+        typical_cell = weight[rows].any(axis=1)  # cells of other instances vote nothing
+        cells, at = np.unique(flat[typical_cell], return_inverse=True)
+        rows = rows[typical_cell]
         for label in np.flatnonzero(weight.any(axis=0)):
-            votes[label] = np.bincount(flat, weights=weight[rows, label], minlength=h * w)
+            votes[label, cells] = np.bincount(at, weights=weight[rows, label], minlength=len(cells))
     return votes.reshape(n_labels, h, w)
