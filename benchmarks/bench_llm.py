@@ -92,8 +92,14 @@ def iesm(*args: str, env: dict[str, str]) -> tuple[subprocess.CompletedProcess, 
 
 
 def calls_within_bounds(calls: list[dict]) -> bool:
-    return all(c["max_tokens"] is None or (c["completion_tokens"] <= c["max_tokens"]
-                                           and "cut at its bound" not in (c["error"] or "")) for c in calls)
+    """True when no completion is longer than its call's `max_tokens` (a reply the bound cut is
+    within it: recorded as a bad reply, counted by `cut_calls`)."""
+    return all(c["max_tokens"] is None or c["completion_tokens"] <= c["max_tokens"] for c in calls)
+
+
+def cut_calls(calls: list[dict]) -> list[str]:
+    """Names of the calls whose reply the `max_tokens` bound cut (the model had more to say)."""
+    return [c["name"] for c in calls if "cut at its bound" in (c["error"] or "")]
 
 
 def main() -> None:
@@ -149,7 +155,7 @@ def main() -> None:
                        ratio <= 2.0 and within, note=f"one query ({ASK_QUERY!r}): MTEFR {mtefr_tokens}, SPR "
                                                      f"{spr_tokens} evaluated{tag}")
                 return
-            tokens, walls, within = {}, {}, True
+            tokens, walls, within, cut = {}, {}, True, []
             for method in ("mtefr", "spr"):
                 since = len(log.read_text(errors="replace"))
                 before, cpu0 = load(), process_cpu_s(server.pid)
@@ -160,6 +166,7 @@ def main() -> None:
                     if (out / "results.jsonl").is_file() else []
                 failed = sum(r["failed_calls"] for r in records)
                 within &= all(calls_within_bounds(r["calls"]) for r in records)
+                cut += [f"{method} {r['id']} {name}" for r in records for name in cut_calls(r["calls"])]
                 tokens[method] = evaluated_tokens(log, since) / max(len(records), 1)
                 print(f"eval {method}: {walls[method]:.1f} s for {len(records)} queries, {failed} failed calls, "
                       f"{tokens[method]:.0f} prompt tokens evaluated per query; {server_cpu(server, cpu0)}; "
@@ -169,9 +176,11 @@ def main() -> None:
                            walls[method] <= 300 and failed == 0 and len(records) == 10, note=f"{failed} failed calls{tag}; {load()}")
             ratio = tokens["mtefr"] / max(tokens["spr"], 1.0)
             record("llm_prompt_tokens_mtefr_vs_spr", ratio, "x", "<= 2x SPR's, completions within bounds",
-                   ratio <= 2.0 and within, note=f"MTEFR {tokens['mtefr']:.0f}, SPR {tokens['spr']:.0f} evaluated per query")
+                   ratio <= 2.0 and within, note=f"MTEFR {tokens['mtefr']:.0f}, SPR {tokens['spr']:.0f} evaluated per "
+                   f"query; replies cut at their bound: {', '.join(cut) or 'none'}")
             print(f"prompt tokens evaluated per query: MTEFR {tokens['mtefr']:.0f} / SPR {tokens['spr']:.0f} = "
-                  f"{ratio:.2f}x; completions within their bounds: {within}")
+                  f"{ratio:.2f}x; completions within their bounds: {within}; replies cut at their bound: "
+                  f"{', '.join(cut) or 'none'}")
         finally:
             server.terminate()
             server.wait(timeout=30)
