@@ -119,6 +119,19 @@ def test_disagreement_counts_who_is_right_on_non_spatial_queries():
     assert disagreement(mtefr) is None
 
 
+def test_disagreement_on_queries_without_a_relation_counts_them_whatever_their_type():
+    # a corpus typed spatial as a whole: only the queries in which no relation is read count;
+    # verdicts from before the field was recorded (None) are left out
+    relation = [False, True, False, None]
+    mtefr = [Verdict(id=f"q{k}", method="mtefr", type="s", correct=c, relation=r)
+             for k, (c, r) in enumerate(zip([True, True, False, True], relation))]
+    spr = [Verdict(id=f"q{k}", method="spr", type="s", correct=c, relation=r)
+           for k, (c, r) in enumerate(zip([False, False, True, False], relation))]
+    assert disagreement(mtefr + spr)["n"] == 0
+    counts = disagreement(mtefr + spr, non_spatial=False, without_relation=True)
+    assert (counts["n"], counts["mtefr_wins"], counts["spr_wins"]) == (2, 1, 1)
+
+
 def test_end_to_end_on_a_tiny_suite(tmp_path, capsys):
     evals = tmp_path / "evals"
     evals.mkdir()

@@ -84,18 +84,19 @@ def _print_report(report) -> None:
 def _print_disagreement(console, disagreements: dict) -> None:
     from rich.table import Table
 
-    table = Table(title="MTEFR vs SPR: queries where exactly one is right (non-spatial; all queries)")
-    for column in ("suite", "n", "differ", "MTEFR wins", "SPR wins", "picks differ", "n all", "differ all",
-                   "MTEFR / SPR wins all"):
+    table = Table(title="MTEFR vs SPR: queries where exactly one is right, and which (MTEFR / SPR); "
+                        "per query set: non-spatial types, no relation read, all")
+    for column in ("suite", "n", "differ", "wins", "n no rel.", "differ no rel.", "wins no rel.", "n all",
+                   "differ all", "wins all"):
         table.add_column(column, justify="left" if column == "suite" else "right", no_wrap=True)
     for name, counts in disagreements.items():
-        part, whole = counts["non_spatial"], counts["all"]
-        if whole is None:
+        if counts["all"] is None:
             continue
-        cells = ([str(part["n"]), _count(part["verdicts_differ"], part["n"]), str(part["mtefr_wins"]),
-                  str(part["spr_wins"]), str(part["picks_differ"])] if part["n"] else ["0", "-", "-", "-", "-"])
-        table.add_row(name, *cells, str(whole["n"]), _count(whole["verdicts_differ"], whole["n"]),
-                      f"{whole['mtefr_wins']} / {whole['spr_wins']}")
+        cells = []
+        for part in (counts["non_spatial"], counts.get("no_relation"), counts["all"]):
+            cells += ([str(part["n"]), _count(part["verdicts_differ"], part["n"]),
+                       f"{part['mtefr_wins']} / {part['spr_wins']}"] if part and part["n"] else ["0", "-", "-"])
+        table.add_row(name, *cells)
     if table.row_count:
         console.print(table)
 

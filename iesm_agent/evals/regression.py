@@ -24,6 +24,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 from ..errors import IesmError
 from ..fileio import load_json, validation_message, write_text
 from ..store.refs import resolve_map_path
+from ..understanding.spatial import parse_query
 
 #: a suite fails when its correct count drops by more than this share of its queries
 TOLERANCE = 0.01
@@ -45,6 +46,9 @@ class Verdict(BaseModel):
     correct: bool
     predicted: Optional[int] = None
     query: Optional[str] = None
+    #: whether the spatial reading finds a relation in the query (the spatial expert is asked);
+    #: None in references written before it was recorded
+    relation: Optional[bool] = None
 
 
 @dataclass
@@ -111,7 +115,8 @@ async def run_suites(specs: list[SuiteSpec], methods: Iterable[str], *, concurre
     out: dict[str, list[Verdict]] = {s.name: [] for s in runnable}
     for r in sorted(outcome.records, key=lambda r: (order[r.id], r.method)):
         out[suite_of[r.id].name].append(Verdict(id=r.id, method=r.method, type=r.type, correct=r.correct,
-                                                predicted=r.predicted, query=r.query))
+                                                predicted=r.predicted, query=r.query,
+                                                relation=bool(parse_query(r.query).relations)))
     return out
 
 
@@ -201,16 +206,19 @@ def compare(suite: str, reference: list[Verdict], current: list[Verdict]) -> lis
 
 
 def disagreement(verdicts: list[Verdict], a: str = "mtefr", b: str = "spr", *,
-                 non_spatial: bool = True) -> Optional[dict]:
+                 non_spatial: bool = True, without_relation: bool = False) -> Optional[dict]:
     """How often methods `a` and `b` disagree on the queries of type other than `SPATIAL_TYPE`
-    (every query when `non_spatial` is False): `n` queries both answered, `verdicts_differ`
-    (one right, the other wrong) split into `a_wins` and `b_wins`, `picks_differ` (different ids,
-    whatever the verdicts) and `share_differ` = verdicts_differ / n. None when a method is absent."""
+    (every query when `non_spatial` is False; with `without_relation`, the queries in which the
+    reading finds no spatial relation, whatever their type): `n` queries both answered,
+    `verdicts_differ` (one right, the other wrong) split into `a_wins` and `b_wins`, `picks_differ`
+    (different ids, whatever the verdicts) and `share_differ` = verdicts_differ / n. None when a
+    method is absent."""
     first = {v.id: v for v in verdicts if v.method == a}
     second = {v.id: v for v in verdicts if v.method == b}
     if not first or not second:
         return None
-    ids = [i for i, v in first.items() if i in second and not (non_spatial and v.type == SPATIAL_TYPE)]
+    ids = [i for i, v in first.items() if i in second and not (non_spatial and v.type == SPATIAL_TYPE)
+           and not (without_relation and v.relation is not False)]
     a_wins = sum(first[i].correct and not second[i].correct for i in ids)
     b_wins = sum(second[i].correct and not first[i].correct for i in ids)
     return {"methods": [a, b], "n": len(ids), "verdicts_differ": a_wins + b_wins,
@@ -265,6 +273,8 @@ def check(specs: list[SuiteSpec], results: dict[str, list[Verdict]], references_
         elif not update:
             report.unreferenced.append(spec.name)
         report.disagreements[spec.name] = {"non_spatial": disagreement(current),
+                                           "no_relation": disagreement(current, non_spatial=False,
+                                                                       without_relation=True),
                                            "all": disagreement(current, non_spatial=False)}
         if update:  # the references of methods this run did not score are kept
             ran = {v.method for v in current}
