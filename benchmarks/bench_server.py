@@ -174,6 +174,11 @@ def _per_call_ms(rounds: list[dict[str, object]], key: str) -> float | None:
     return sum(r[key] for r in rounds) * 1000 / sum(len(r["calls"]) for r in rounds)
 
 
+def _ms(value: float | None) -> str:
+    """A per-call CPU figure in ms for a note ("?" when the process could not be measured)."""
+    return "?" if value is None else f"{value:.2f}"
+
+
 def run_config(env: dict[str, str], sequential: list[str], bursts: list[list[str]],
                floor: tuple[str, int], command: tuple[str, ...] = SERVE, cold: bool = True) -> dict[str, float]:
     """Start a server (`command`) with `env`, measure, stop it, time `iesm ask` cold (unless not
@@ -343,19 +348,19 @@ def main() -> None:
            cpu is not None and cpu <= 3,
            note=f"server CPU (all threads) per find_goal call over MCP HTTP in {bursts_text}; client "
                 f"{full['burst_client_cpu_ms']:.2f} ms; lexicons only: server "
-                f"{'?' if lex['burst_server_cpu_ms'] is None else format(lex['burst_server_cpu_ms'], '.2f')} ms; "
-                f"the SDK floor's server {'?' if full['floor_server_cpu_ms'] is None else format(full['floor_server_cpu_ms'], '.2f')} "
+                f"{_ms(lex['burst_server_cpu_ms'])} ms; "
+                f"the SDK floor's server {_ms(full['floor_server_cpu_ms'])} "
                 f"ms, client {full['floor_client_cpu_ms']:.2f} ms per call")
     record("serve_canned_find_goal_over_sdk_floor", canned["floor_ratio"], "x", "reported", True,
            note=f"find_goal answered from answers computed at start-up (no retrieval): burst p50 over the SDK "
                 f"floor's, median of {args.rounds} rounds (p50s {', '.join(f'{p:.0f}' for p in canned['burst_p50s'])} "
                 f"vs {', '.join(f'{p:.0f}' for p in canned['floor_p50s'])} ms); CPU per call server "
-                f"{'?' if canned['burst_server_cpu_ms'] is None else format(canned['burst_server_cpu_ms'], '.2f')} ms, "
+                f"{_ms(canned['burst_server_cpu_ms'])} ms, "
                 f"client {canned['burst_client_cpu_ms']:.2f} ms")
     record("mcp_sdk_floor_40_concurrent_p50_ms", full["floor_p50"], "ms", "reported", True,
            note=f"{n} calls at once to an MCP server whose only tool returns 'ok' (no iesm code), right after each "
                 f"find_goal burst, median of {args.rounds}; CPU per call: server "
-                f"{'?' if full['floor_server_cpu_ms'] is None else format(full['floor_server_cpu_ms'], '.2f')} ms, "
+                f"{_ms(full['floor_server_cpu_ms'])} ms, "
                 f"client {full['floor_client_cpu_ms']:.2f} ms")
     record("serve_vs_ask_cold_speedup", full["cold_ms"] / full["warm_ms"], "x", "reported", True,
            note=f"warm find_goal {full['warm_ms']:.1f} ms vs fresh iesm ask {full['cold_ms']:.0f} ms; lexicons only "

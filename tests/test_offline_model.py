@@ -318,9 +318,20 @@ def test_the_description_expert_reads_the_whole_request_against_captions(model, 
     assert expert_rank(model, lib, "abs", query, cands=OWN_EVIDENCE)[0] == 2
 
 
+FUNCTION_VS_LOOKS = [
+    {"id": 1, "label": "armchair", "room": "study", "caption": "A grey wool armchair."},
+    {"id": 2, "label": "box", "room": "study", "caption": "A red cardboard box."},
+]
+
+
 def test_the_object_expert_ranks_by_the_named_category_not_by_the_function(model, lib):
     # a named blanket on the map: the object expert's evidence, whatever "to read" asks for
     assert expert_rank(model, lib, "obj", "the blanket I read under", cands=OWN_EVIDENCE)[0] == 2
+    # no category named: the function ("to sit on") is the abstract expert's evidence, not a tier
+    # the object expert ranks by, so the two experts read the request differently
+    query = "something red to sit on"
+    assert expert_rank(model, lib, "abs", query, cands=FUNCTION_VS_LOOKS)[0] == 1
+    assert expert_rank(model, lib, "obj", query, cands=FUNCTION_VS_LOOKS)[0] == 2
 
 
 def _gate(model, lib, query, candidates):

@@ -150,8 +150,8 @@ def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
 
 
 @pytest.mark.parametrize("text, kind", [
-    ("In the study there are red cushions lying by the lamps. Go to one of them.", "pillow"),
-    ("Which plates are on the kitchen shelves? Bring me to one of them.", "plate"),
+    ("In the study there are red cushions lying by the lamps. Lead me to one of them.", "pillow"),
+    ("Which plates are on the kitchen shelves? Pick one of them for me.", "plate"),
 ])
 def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text, kind):
     q = analyse_query(text)

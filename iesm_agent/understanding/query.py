@@ -36,7 +36,7 @@ class QueryInfo:
     kin: dict[str, float] = field(default_factory=dict)       # kinds that serve the named kind's purpose
     abstract: bool = False                                    # "something", "a place to ..."
     #: the function is said by a verb or a phrase ("to sit", "turn the heating down"), a class noun
-    #: ("seating"), a cue naming the target ("a seat"), an abstract target ("something for
+    #: ("seating"), a cue naming the target (a perch), an abstract target ("something for
     #: storage") or the context, not only by a noun modifying the target ("the gold cover")
     purpose: bool = False
     head_words: frozenset[str] = frozenset()                  # lemmas of the target phrase
@@ -206,7 +206,7 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
     at = getattr(surface[span.end - 1], "at", None)
-    word = None if at is None else structure.index_at(at)
+    word = _parse_word(structure, surface, span.end - 1)
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
             and structure.words[word].pos == "NOUN":
         return True  # a thing the request mentions, not a description ("you nuke popcorn in")
@@ -222,6 +222,12 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
         return False
     return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
+
+
+def _parse_word(structure: Structure, surface: list[str], index: int) -> int | None:
+    """The parse's word that covers surface token `index` (None: a token outside the parse)."""
+    at = getattr(surface[index], "at", None)
+    return None if at is None else structure.index_at(at)
 
 
 def _names_a_kind(structure: Structure, surface: list[str], span: Span, target: _Target) -> bool:
@@ -281,8 +287,7 @@ def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target
     target = _ordered_target(lex, reading.lemmas, reading.spans, clause)
     word = reading.structure.target  # "the thing", "something": the parse's word all the same
     if target.head is not None:
-        at = getattr(reading.surface[target.head.end - 1], "at", None)
-        word = None if at is None else reading.structure.index_at(at)
+        word = _parse_word(reading.structure, reading.surface, target.head.end - 1)
     return _Target(target.start, target.end, target.head, word)
 
 
@@ -355,10 +360,9 @@ def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     """True when surface token `index` is a noun the parse puts under the target noun, not the
     head itself (a modifier, what a modifier's preposition takes: "the red book with gold on the
     cover"), so a use it hints at describes the thing rather than says what to do; a head noun
-    that is a cue names a class of things ("a light", "a seat")."""
+    that is a cue names a class of things (a perch to sit on)."""
     structure = reading.structure
-    at = getattr(reading.surface[index], "at", None)
-    word = None if at is None else structure.index_at(at)
+    word = _parse_word(structure, reading.surface, index)
     head = target.word if target.word is not None else structure.target
     return (word is not None and head is not None and word != head and structure.words[word].pos in NOUNS
             and structure.dominates(head, word))

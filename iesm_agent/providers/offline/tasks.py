@@ -39,13 +39,12 @@ _ON_MAP_FIT = 0.6
 
 def _named_on_map(q: QueryInfo, lines: list[str]) -> bool:
     """True when some candidate's label is the category the query names (or a kind of it), or
-    when the prompt shows no candidates to check against."""
-    parsed = _parse_candidates(lines)
-    if not q.named or not parsed:
+    when the prompt shows no candidates to check against. Reads the label fit of the scorer's
+    candidate matrix, which the experts' prompts of the same query reuse."""
+    if not q.named:
         return True
-    lex = load_lexicon()
-    named = [c for c, w in q.targets.items() if w >= 1.0]
-    return any(wc * lex.concept_sim(t, c) >= _ON_MAP_FIT for _, r in parsed for c, wc in r.concepts for t in named)
+    ids, _, comp = _candidate_matrix(q, _parse_candidates(lines))
+    return not len(ids) or float(comp[:, _LABEL].max()) >= _ON_MAP_FIT
 
 
 def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]:
@@ -224,9 +223,9 @@ def _score_all(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
 
 
 def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Category first: the named kind (a more specific kind counts as that kind), or with no
-    category the kinds that serve the asked-for function; the other evidence (room, appearance,
-    text) only orders candidates of the same tier, the label's graded fit last."""
+    """Category first: the kind the request names as its target (a more specific kind counts as
+    that kind; never the function asked for, which is the abstract expert's evidence); the other
+    evidence (room, appearance, text, function) only orders candidates of the same tier."""
     tier = _label_tier(comp)
     evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0])
     return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
@@ -250,8 +249,9 @@ def _score_room(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarr
 
 
 def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Appearance first among the asked-for and related kinds (a red stool before a black chair
-    for "the red chair"), then the kind, then the label's fit; unrelated objects after them."""
+    """How the whole request matches each candidate's caption first (attribute slots, the
+    request's words in it, sentence-embedding similarity), whatever its kind; then the asked-for
+    kind, then the label's fit (a red stool before a black chair for "the red chair")."""
     tier = _kind_tier(q, comp)
     desc = comp[:, _DESC] + 0.5 * comp[:, _TEXT] + 0.5 * comp[:, _EMB]
     score = _SECOND * desc + 3.0 * tier + comp[:, _LABEL]
