@@ -79,7 +79,6 @@ class SpatialQuery:
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
-    unknown_landmark: bool = False  # a relation's landmark is a noun the lexicon does not know
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
 
     @property
@@ -440,9 +439,7 @@ class _Reader:
                 self.used.add(j)
                 return i
             if not self.landmark(rel, i):
-                if _unknown_noun_after(self.lex, toks, self.lemmas, i, self.cat_at):
-                    out.unknown_landmark = True  # "above the ottoman-thing": a landmark we cannot read
-                return i  # "the one on top", "over there": nothing to relate to
+                return i  # "the one on top", "over there", a landmark we cannot read: nothing to relate to
             if kind == "between":
                 self.landmark(rel, i)
         out.relations.append(rel)
@@ -488,15 +485,3 @@ def parse_query(text: str) -> SpatialQuery:
     """The spatial reading of `text` (no relations when it states none)."""
     return _Reader(text).read()
 
-
-def _unknown_noun_after(lex, toks: list[str], lemmas: list[str], i: int, cat_at: dict) -> bool:
-    """True when the words right after a relation cue (up to the next boundary word) hold a
-    content word that no lexicon phrase covers: a landmark the lexicon does not know."""
-    bounds, skip = lex.words["boundaries"], lex.words["skip"]
-    spatial_words = {w for cue in _CUES for w in cue} | set(_EXTREMES) | set(_ORDINALS) | {"far", "very", "just"}
-    for j in range(i, min(len(toks), i + 4)):
-        if j in cat_at or toks[j] in bounds or toks[j] in spatial_words:
-            return False
-        if toks[j] not in skip and toks[j].isalpha() and len(toks[j]) > 2 and not lex.scan([lemmas[j]]):
-            return True
-    return False

@@ -256,8 +256,6 @@ def rank(prompt: Prompt) -> dict:
         return abstain("the query states no spatial relation, comparison, order or viewpoint")
     if sq.unknown_target:
         return abstain("the target is a word I do not know")
-    if sq.unknown_landmark:
-        return abstain("a landmark is a word I do not know")
     scene = _read_scene(prompt)
     if not len(scene.boxes):
         return abstain("no candidates")
