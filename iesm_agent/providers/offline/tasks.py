@@ -369,15 +369,10 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
         return hit[1]
     lex = load_lexicon()
     n = len(block.records)
-    fits = []
-    for cc in block.concepts:
-        sims = memo.get(("c", cc))
-        if sims is None:
-            sims = memo[("c", cc)] = _concept_fit(lex, q, cc)
-        fits.append(sims)
     comp = np.zeros((n, _N_COMPONENTS), dtype=np.float64)
     if len(block.pair_row):
-        products = block.pair_weight[:, None] * np.array(fits, dtype=np.float64)[block.pair_concept]
+        fits = _concept_fits(block, _weights_key(q.targets), _weights_key(q.afford), _weights_key(q.kin))
+        products = block.pair_weight[:, None] * fits[block.pair_concept]
         best = np.zeros((n, 3), dtype=np.float64)
         np.maximum.at(best, block.pair_row, products)
         comp[:, _LABEL], comp[:, _AFFORD], comp[:, _KIN] = best[:, 0], best[:, 1], best[:, 2]
@@ -457,10 +452,32 @@ def _slot_sim(lex, slot: Slot, other: Slot) -> float:
     return 0.0
 
 
-def _concept_fit(lex, q: QueryInfo, cc: str) -> tuple[float, float, float]:
-    """(category fit, function fit, functional-kin fit) of one candidate category for the query."""
-    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in q.targets.items()), default=0.0)
-    return label, _by_kind(lex, q.afford, cc), _by_kind(lex, q.kin, cc)
+def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
+    """A hashable form of a query's category weights (the fits below do not depend on their order)."""
+    return tuple(sorted(weights.items()))
+
+
+@lru_cache(maxsize=512)
+def _concept_fits(block: _Block, targets: tuple[tuple[str, float], ...], afford: tuple[tuple[str, float], ...],
+                  kin: tuple[tuple[str, float], ...]) -> np.ndarray:
+    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for,
+    to the functions it asks for and to their functional kin (`_concept_fit`). Memoised by the
+    block and the three weightings: queries asking for the same things score a map's categories
+    once ("the sofa in the lounge" and "the grey sofa" alike)."""
+    lex = load_lexicon()
+    targets_, afford_, kin_ = dict(targets), dict(afford), dict(kin)
+    fits = np.array([_concept_fit(lex, targets_, afford_, kin_, cc) for cc in block.concepts],
+                    dtype=np.float64).reshape(-1, 3)
+    fits.flags.writeable = False
+    return fits
+
+
+def _concept_fit(lex, targets: dict[str, float], afford: dict[str, float], kin: dict[str, float],
+                 cc: str) -> tuple[float, float, float]:
+    """(category fit, function fit, functional-kin fit) of one candidate category for a query
+    asking for `targets`, `afford` and `kin` (category or function -> weight)."""
+    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in targets.items()), default=0.0)
+    return label, _by_kind(lex, afford, cc), _by_kind(lex, kin, cc)
 
 
 def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
