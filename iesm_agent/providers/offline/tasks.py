@@ -323,7 +323,7 @@ def _parse_candidate_block(lines: tuple[str, ...]) -> _Block:
              for row, r in enumerate(records) for c, w in r.concepts]
     label_words: dict[frozenset[str], int] = {}
     room_keys: dict[tuple[str | None, frozenset[str]], int] = {}
-    return _Block(
+    block = _Block(
         ids=np.array([i for i, _ in parsed], dtype=np.int64), records=records,
         rooms=[r.room for r in records if r.room], labels=[r.label for r in records if r.label],
         concepts=tuple(concepts),
@@ -336,6 +336,10 @@ def _parse_candidate_block(lines: tuple[str, ...]) -> _Block:
         room_key_of=np.array([room_keys.setdefault((r.room, r.room_words), len(room_keys)) for r in records],
                              dtype=np.int64),
         room_keys=tuple(room_keys))
+    for array in (block.ids, block.pair_row, block.pair_concept, block.pair_weight, block.label_words_of,
+                  block.room_key_of):
+        array.flags.writeable = False  # shared by every prompt showing the block
+    return block
 
 
 #: per reading, the scorer's values that recur across a query's prompts (the reading itself is
@@ -387,6 +391,7 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
                           for r in block.records]
     if q.overlap:
         comp[:, _TEXT] = [len(q.overlap & r.stems) / len(q.overlap) for r in block.records]
+    comp.flags.writeable = False  # shared by the query's gate and experts
     if len(memo) < 4096:
         memo[key] = (block, comp)
     return comp
@@ -500,6 +505,7 @@ def _with_embeddings(q: QueryInfo, comp: np.ndarray, encoder, records: list[Reco
         return hit[2]
     out = comp.copy()
     out[:, _EMB] = _embedding_scores(encoder, q.text, records)
+    out.flags.writeable = False
     if len(memo) < 4096:
         memo[key] = (comp, encoder, out)
     return out
