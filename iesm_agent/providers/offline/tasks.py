@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import threading
 import weakref
-from functools import lru_cache
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any, Callable
 
 import numpy as np
