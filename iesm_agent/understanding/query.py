@@ -8,6 +8,7 @@ from functools import lru_cache
 from types import MappingProxyType, SimpleNamespace
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
 from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
 from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
@@ -182,15 +183,18 @@ def _adjacent(surface: list[str], i: int) -> bool:
     return getattr(surface[i], "at", -1) == getattr(surface[i - 1], "at", -2) + len(surface[i - 1]) + 1
 
 
-def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span]) -> _Target:
+def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
-    ends at the first boundary word (a relative clause, landmark or room); its head is the
-    rightmost category before that."""
+    ends at the first boundary word (a relative clause, landmark or room) or where a clause
+    about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
+    category before that."""
     bounds = lex.words["boundaries"]
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
     if lemmas and lemmas[0] in bounds:
         end = 0
+    if clause:
+        end = min(end, min(clause))
     return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
 
 
@@ -267,13 +271,13 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
 
 
-def _locate_target(lex: Lexicon, reading: _Reading) -> _Target:
+def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase: from the parse when it names a known kind, else from the word order;
     its `word` is the parse's word for the head noun either way."""
     parsed = _parsed_target(reading.structure, reading.surface, reading.spans)
     if parsed is not None:
         return parsed
-    target = _ordered_target(lex, reading.lemmas, reading.spans)
+    target = _ordered_target(lex, reading.lemmas, reading.spans, clause)
     word = reading.structure.target  # "the thing", "something": the parse's word all the same
     if target.head is not None:
         word = _parse_word(reading.structure, reading.surface, target.head.end - 1)
@@ -296,9 +300,11 @@ def analyse_query(text: str) -> QueryInfo:
     for ruled_out in reading.ruled_out:
         info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets)
         info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
-    target = _locate_target(lex, reading)
+    categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
+    clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
+    target = _locate_target(lex, reading, clause)
     info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
-    afford, attr_spans, landmark_words = _read_spans(lex, reading, target, info)
+    afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
     for positions, idx in lex.gapped_cues(reading.lemmas):
@@ -362,7 +368,7 @@ def _leaves_a_room(reading: _Reading) -> bool:
     return index is not None and any(s.has("room") and s.start <= index < s.end for s in reading.spans)
 
 
-def _read_spans(lex: Lexicon, reading: _Reading, target: _Target,
+def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
                 info: SimpleNamespace) -> tuple[dict[str, float], list[Span], set[str]]:
     """Fill `info` from the lexicon spans: the head's categories, rooms, attributes of the target
     and the landmarks named beside it; return (function evidence, attribute spans, landmark words)."""
@@ -401,7 +407,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target,
             attr_spans.append(s)
         if attr and not s.has("cue"):
             continue
-        if s.has("cue"):
+        if s.has("cue") and s.start not in clause:
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
             info.purpose = (info.purpose or s.end - s.start > 1 or info.abstract
@@ -475,6 +481,18 @@ def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: f
     words = [surface[i] for i in range(start, end)
              if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()]
     return " ".join(words) or None
+
+
+def _landmark_clauses(surface: list[str], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
+    """Token positions of relative clauses about a landmark whose preposition is stranded: from
+    the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
+    out: set[int] = set()
+    for k, token in enumerate(surface):
+        if token in STRANDABLE and is_stranded(surface, k + 1, finals):
+            start = clause_landmark(categories, surface, k)
+            if start is not None:
+                out.update(range(start, k + 1))
+    return out
 
 
 def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
