@@ -131,8 +131,8 @@ _FIRST, _SECOND = 100.0, 10.0
 def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     """Top-kappa candidate ids, ranked by the evidence the expert's focus line names first
     (category, room, appearance or function; every kind of evidence for a prompt without a
-    focus). `encoder()` gives the sentence encoder (or None); it is asked for only when
-    embedding similarity would count, or to ground words the lexicon does not know."""
+    focus). `encoder()` gives the sentence encoder (or None): how close the whole request is to
+    each candidate's label and caption counts for every request, beside the lexicon's reading."""
     q = analyse_query(prompt.query)
     block = _parse_candidates(prompt.candidate_lines)
     if q.unknown_target or q.unknown_room:
@@ -144,8 +144,7 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     comp = _candidate_matrix(q, block)
     role = focus_role(prompt.focus) if prompt.focus else "all"
     lexical = bool(q.targets or q.afford)
-    wants_embeddings = not lexical or q.attrs or q.extra
-    enc = encoder() if encoder is not None and wants_embeddings else None
+    enc = encoder() if encoder is not None else None
     if enc is not None:
         comp = _with_embeddings(q, comp, enc, records)
     scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
