@@ -6,6 +6,7 @@ viewpoint ("facing the bed"). Lexicon-driven, from the shared query understandin
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ..lexicon import load_lexicon
 from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
@@ -481,7 +482,10 @@ class _Reader:
         return out
 
 
+@lru_cache(maxsize=4096)
 def parse_query(text: str) -> SpatialQuery:
-    """The spatial reading of `text` (no relations when it states none)."""
+    """The spatial reading of `text` (no relations when it states none). Memoised: retrieval's
+    choice of experts, the gate's weighing and the spatial expert of one query share it, so no
+    caller may change it."""
     return _Reader(text).read()
 

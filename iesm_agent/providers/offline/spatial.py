@@ -19,24 +19,13 @@ import numpy as np
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
 from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
-from ...understanding.spatial import SIZE_EXTREMES, Relation, SpatialQuery, parse_query
+from ...understanding.spatial import SIZE_EXTREMES, Relation, parse_query
 from .prompt import Prompt
-from .tasks import reading_memo
 
 #: words in an expert's gate description that make the gate score it by the query's relations
 GATE_MARKER = "spatial relations"
 #: gate score of the other experts when the query picks its target by a relation
 _OTHERS_CAP = 1
-
-
-def _spatial_reading(query: str) -> SpatialQuery:
-    """`parse_query(query)`, once per reading of `query`: the gate's weighing and the spatial
-    expert of one query read the same relations (about 0.1 ms each time)."""
-    memo = reading_memo(analyse_query(query))
-    sq = memo.get("spatial reading")
-    if sq is None:
-        sq = memo["spatial reading"] = parse_query(query)
-    return sq
 
 
 # -- ranking ---------------------------------------------------------------------------------
@@ -274,7 +263,7 @@ def rank(prompt: Prompt) -> dict:
     def abstain(reason: str) -> dict:
         return {"ranked_instance_ids": [], "abstain": reason}
 
-    sq = _spatial_reading(prompt.query)
+    sq = parse_query(prompt.query)
     if not sq.relations:
         return abstain("the query states no spatial relation, comparison, order or viewpoint")
     if sq.unknown_target:
@@ -314,7 +303,7 @@ def weigh(prompt: Prompt, reply: dict) -> dict:
     spatial = [e["name"] for e in prompt.experts if GATE_MARKER in str(e.get("gate_description", "")).lower()]
     if not spatial:
         return reply
-    sq = _spatial_reading(prompt.query)
+    sq = parse_query(prompt.query)
     scores, hints = dict(reply.get("scores", {})), dict(reply.get("hints", {}))
     named = sq.named
     if sq.relations and named:
