@@ -4,14 +4,11 @@ cannot tell apart, the one the sentence encoder finds closest comes first."""
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
+from test_offline_memos import mtefr_messages
 
-from iesm_agent.providers import FunctionModel
-from iesm_agent.providers.offline import OfflineModel, prompt, tasks
-from iesm_agent.retrieval import Retriever
+from iesm_agent.providers.offline import prompt, tasks
 from iesm_agent.understanding import analyse_query
 
 
@@ -31,16 +28,9 @@ class _PointingEncoder:
 
 @pytest.fixture(scope="module")
 def sofa_prompts(apartment_store):
-    """The object expert's prompt for a request the lexicon reads in full ("the sofa")."""
-    model = OfflineModel(use_embeddings=False)
-    seen: list = []
-
-    def answer(messages, options):
-        seen.append(messages)
-        return json.dumps(model.answer(messages))
-
-    Retriever(apartment_store, provider=FunctionModel(answer), method="mtefr", cache=False).ask("the sofa")
-    return [prompt.read_prompt(m) for m in seen if prompt.read_prompt(m).task == "rank"]
+    """The ranking prompts of a request the lexicon reads in full ("the sofa")."""
+    readings = [prompt.read_prompt(m) for m in mtefr_messages(apartment_store, ["the sofa"])]
+    return [r for r in readings if r.task == "rank"]
 
 
 def test_sentence_similarity_orders_candidates_the_reading_cannot_tell_apart(sofa_prompts):

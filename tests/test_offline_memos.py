@@ -25,16 +25,16 @@ QUERIES = ["the grey sofa in the living room", "somewhere to sleep", "the lamp n
 
 
 def _forget_everything() -> None:
-    for memoised in (prompt._block_lines, prompt.focus_role, tasks._parse_candidate_block,
+    for memoised in (prompt._block_lines, prompt.focus_role, tasks._parse_candidates,
                      tasks._concept_fits, spatial._scene_of, spatial._of_kind):
         memoised.cache_clear()
     with tasks._MEMOS_LOCK:
         tasks._MEMOS.clear()
 
 
-@pytest.fixture(scope="module")
-def prompts(apartment_store):
-    """The messages of every model call MTEFR makes for `QUERIES`, in order."""
+def mtefr_messages(store, queries: list[str]) -> list:
+    """The messages of every model call MTEFR makes for `queries` on `store`, in order (the
+    offline model answers them, without embeddings)."""
     model = OfflineModel(use_embeddings=False)
     seen: list = []
 
@@ -42,9 +42,16 @@ def prompts(apartment_store):
         seen.append(messages)
         return json.dumps(model.answer(messages))
 
-    retriever = Retriever(apartment_store, provider=FunctionModel(answer), method="mtefr", cache=False)
-    for query in QUERIES:
+    retriever = Retriever(store, provider=FunctionModel(answer), method="mtefr", cache=False)
+    for query in queries:
         retriever.ask(query)
+    return seen
+
+
+@pytest.fixture(scope="module")
+def prompts(apartment_store):
+    """The messages of every model call MTEFR makes for `QUERIES`, in order."""
+    seen = mtefr_messages(apartment_store, QUERIES)
     assert len(seen) >= 5 * len(QUERIES)
     return seen
 
@@ -90,7 +97,7 @@ def test_a_block_is_read_once_and_its_category_fits_are_shared_by_queries_asking
     _forget_everything()
     for m in prompts:
         model.answer(m)
-    blocks = tasks._parse_candidate_block.cache_info()
+    blocks = tasks._parse_candidates.cache_info()
     # the map's candidates, with geometry when a relation brings in the spatial expert, and without
     assert blocks.currsize == 2 and blocks.hits >= len(prompts) - len(QUERIES) - 2
     fits = tasks._concept_fits.cache_info()

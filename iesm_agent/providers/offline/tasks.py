@@ -299,16 +299,11 @@ class _Block:
     room_key_of: np.ndarray               # (N,) int64 index into `room_keys`
 
 
+@lru_cache(maxsize=64)
 def _parse_candidates(lines: tuple[str, ...]) -> _Block:
     """The readable candidate lines as a `_Block`, memoised by the lines (`read_prompt` gives the
-    same tuple for the same block text)."""
-    return _parse_candidate_block(tuple(lines))
-
-
-@lru_cache(maxsize=64)
-def _parse_candidate_block(lines: tuple[str, ...]) -> _Block:
-    """`_parse_candidates` memoised by the lines. The records are `candidate_from_line`'s own
-    (memoised there), so a hit returns the very objects a miss would."""
+    same tuple for the same block text). The records are `candidate_from_line`'s own (memoised
+    there), so a hit returns the very objects a miss would."""
     parsed: list[tuple[int, Record]] = []
     seen: set[int] = set()
     for line in lines:
@@ -467,7 +462,7 @@ def _concept_fits(block: _Block, targets: tuple[tuple[str, float], ...], afford:
     """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for,
     to the functions it asks for and to their functional kin (`_concept_fit`). Memoised by the
     block and the three weightings: queries asking for the same things score a map's categories
-    once ("the sofa in the lounge" and "the grey sofa" alike)."""
+    once ("the recliner in the den" and "the grey recliner" alike)."""
     lex = load_lexicon()
     targets_, afford_, kin_ = dict(targets), dict(afford), dict(kin)
     fits = np.array([_concept_fit(lex, targets_, afford_, kin_, cc) for cc in block.concepts],
