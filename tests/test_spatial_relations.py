@@ -208,3 +208,43 @@ def test_a_side_word_said_as_a_verb_is_not_a_relation(text, expected):
 ])
 def test_behind_takes_its_landmark_and_right_before_a_relation_intensifies(text, expected):
     assert _relations(text) == expected
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the middle chair", 11),                   # the middle one of the row of chairs, not the room's
+    ("the chair at the middle of those three chairs", 11),
+    ("the chair at the middle of the bedroom", 12),  # the room's middle
+])
+def test_middle_of_the_group_or_of_the_room(room, query, best):
+    ranked = spatial(room, query)
+    assert ranked and ranked[0] == best, (query, ranked)
+
+
+def _middles(text: str) -> list[tuple[str, str, list[tuple[str, ...]], str]]:
+    return [(r.kind, r.value, r.landmarks, r.landmark_where) for r in parse_query(text).relations]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the middle one of the target's own kind, said on the target, a stand-in or a row of them
+    ("the middle stool", [("middle", "group", [], "")]),
+    ("pick the middle one of the jugs", [("middle", "group", [], "")]),
+    ("the jug at the centre of a line of jugs", [("middle", "group", [], "")]),
+    # said on a landmark it says which landmark
+    ("the stool by the middle piano", [("near", "", [("piano",)], "middle")]),
+    # the middle of a room is no landmark; a clause on the room keeps its own relation
+    ("the easel at the centre of the studio that is farthest from the piano",
+     [("middle", "", [], ""), ("farthest", "", [("piano",)], "")]),
+])
+def test_middle_reads_whose_middle(text, expected):
+    assert _middles(text) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # where the one who looks stands is not where the target is
+    ("when standing by the piano, the stool on the left", [("left", [], "")]),
+    ("if you stand near the counter, it is the jug on the right", [("right", [], "")]),
+    # said of the target, or of someone else, it places them
+    ("a lamp standing beside the piano", [("near", [("piano",)], "")]),
+])
+def test_where_the_viewer_stands_is_not_a_relation(text, expected):
+    assert _relations(text) == expected

@@ -41,6 +41,8 @@ _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
+#: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
+_STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
 #: parse relations of a word that heads a relation's object ("on the piano [bench]")
@@ -59,7 +61,8 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
 class Relation:
     """One relation: `kind` (a `_CUES` value, "extreme" or "ordinal"), landmark categories
     (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
-    high/low/wide; ordinal: side or "landmark"), `order` (1-based, -1 = last)."""
+    high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the target's
+    kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
 
     kind: str
     landmarks: list[tuple[str, ...]] = field(default_factory=list)
@@ -294,6 +297,9 @@ class _Reader:
             return i + 1  # "the clock face": a noun, not "face the window"
         if words == ("at",) and not self.beside(self.words[i]):
             return i + 1
+        if kind != "facing" and self.viewer_place():  # "when standing in the middle of the room": where the viewer is
+            self.landmark(Relation(kind), i + len(words))  # its noun is no target
+            return i + len(words)
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
         if stranded and self.inverse(i, kind):
@@ -338,10 +344,9 @@ class _Reader:
                 self.used.add(j)
                 out.facing = tuple(self.cat_at[j].values("cat"))
             return i
-        if kind in ("corner", "middle") and nxt == "of":
-            rel = Relation(kind)
-            self.landmark(rel, i)  # "the middle of the bed": relative to that object
-            out.relations.append(rel)
+        if (kind in ("corner", "middle") and nxt == "of") or (kind == "middle" and self.describes_target()):
+            return self.place_of(i, kind)
+        if kind == "middle" and self.says_which_landmark(kind):
             return i
         if kind == "right" and nxt != "of" and i < len(toks) and self.cue_word is not None and (
                 (self.word(i).pos == "ADP" and self.structure.words[self.cue_word].dep != "pobj")
@@ -353,6 +358,55 @@ class _Reader:
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
             return i
         return self.landmark_relation(i, kind, nxt)
+
+    def viewer_place(self) -> bool:
+        """True when the cue word places the one who looks, not the target: it hangs on "stand"
+        said of no one or of the listener ("when standing by the door", "if you stand by the oven")."""
+        st, k = self.structure, self.cue_word
+        if k is not None and st.words[k].dep == "pobj":
+            k = st.words[k].head  # "at [the centre] of the hall": through its preposition
+        if k is not None and st.words[k].pos == "ADP":
+            k = st.words[k].head
+        if k is None or st.words[k].text.lower() not in _STANDING:
+            return False
+        subjects = st.children(k, "nsubj")
+        return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
+            bool(subjects) or st.words[k].dep in ("advcl", "ROOT", "pcomp"))
+
+    def describes_target(self) -> bool:
+        """True when the cue word is an adjective on the target noun or a stand-in for it ("the
+        middle drawer", "the middle one"), not on a landmark ("the cup on the middle shelf")."""
+        st, k = self.structure, self.cue_word
+        if k is None or st.words[k].dep not in ("amod", "compound"):
+            return False
+        head = st.words[k].head
+        return self.span_at(head) == self.target_at or self.points_back(head) or st.words[head].text.lower() in TARGET_PRONOUNS
+
+    def place_of(self, i: int, kind: str) -> int:
+        """"the middle of X", "the corner of X", "the middle X": relative to the object X; the
+        middle one of the target's own kind ("of the three vases", or said of the target itself);
+        the room's middle or corner when X is no object ("of the room", read for itself, so a
+        clause on it keeps its own relation)."""
+        rel, objects, st = Relation(kind), self.cue_objects(), self.structure
+        objects |= {o for k in objects if self.span_at(k) is None for p in st.children(k, "prep")
+                    if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
+        if kind == "middle" and (self.describes_target() or any(self.points_back(k) for k in objects)):
+            rel.value = "group"
+        elif any(self.span_at(k) is not None for k in objects):
+            self.landmark(rel, i)
+        self.out.relations.append(rel)
+        return i
+
+    def says_which_landmark(self, kind: str) -> bool:
+        """True when the cue word is on a landmark's noun, not the target's ("on the left bench",
+        "by the middle window"): it says which of the landmark's instances (`landmark_where`)."""
+        owner = self.span_at(self.cue_noun())
+        if owner is None or owner == self.target_at or self.target_at is None:
+            return False
+        described = next((r for r in self.out.relations if owner in self.taken.get(id(r), ())), None)
+        if described is not None and not described.landmark_where:
+            described.landmark_where = kind
+        return True
 
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door")."""
@@ -402,12 +456,7 @@ class _Reader:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
         toks, out, rel = self.toks, self.out, Relation(kind)
         if kind in ("left", "right", "front", "behind"):
-            owner = self.span_at(self.cue_noun())
-            if owner is not None and owner != self.target_at and self.target_at is not None and not self.side_of():
-                # "on the left bench": which of the landmark's instances, not the target's side
-                described = next((r for r in out.relations if owner in self.taken.get(id(r), ())), None)
-                if described is not None and not described.landmark_where:
-                    described.landmark_where = kind
+            if not self.side_of() and self.says_which_landmark(kind):
                 return i
             if self.inverse_by_pronoun(kind):
                 return i
