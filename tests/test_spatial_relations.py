@@ -248,3 +248,16 @@ def test_middle_reads_whose_middle(text, expected):
 ])
 def test_where_the_viewer_stands_is_not_a_relation(text, expected):
     assert _relations(text) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a side word made superlative is the side, written as one word, hyphenated or apart
+    ("the leftmost stool", [("left", [], "")]),
+    ("the right-most jug on the shelf", [("right", [], ""), ("on", [("shelf",)], "")]),
+    ("the front most stool", [("front", [], "")]),
+    ("the most comfortable stool", []),
+    # "further from" is "farther from"
+    ("the stool further from the piano", [("farthest", [("piano",)], "")]),
+])
+def test_superlative_side_words_and_further(text, expected):
+    assert _relations(text) == expected

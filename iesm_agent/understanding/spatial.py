@@ -22,7 +22,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
     ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
     ("closer",): "closest", ("nearer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
-    ("farther",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
+    ("farther",): "farthest", ("further",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
     ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
     ("centre",): "middle", ("at",): "near", ("against",): "wall", ("along",): "wall", ("left",): "left",
     ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing", ("face",): "facing",
@@ -36,6 +36,8 @@ _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger"
              "longest": "wide", "longer": "wide"}
 _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
              "fifth": 5, "5th": 5, "last": -1}
+#: relations a side or middle word names, also made superlative ("rightmost")
+_SIDES = frozenset({"left", "right", "front", "middle"})
 #: words that negate the relation that follows ("not on the table", "isn't in the corner")
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
@@ -90,6 +92,18 @@ class SpatialQuery:
         return " ".join(r.kind if r.kind not in ("extreme", "ordinal") else r.value or r.kind for r in self.relations)
 
 
+def _side_words(kept: list[tuple[str, int]], text: str) -> list[tuple[str, int]]:
+    """(token, offset) pairs of `text` with a side or middle word made superlative ("rightmost",
+    "left-most", "middlemost") read as that word."""
+    out: list[tuple[str, int]] = []
+    for token, at in kept:
+        if token == "most" and out and text[at - 1:at] == "-" and _CUES.get((out[-1][0],)) in _SIDES:
+            continue
+        stem = token[:-4] if token.endswith("most") else ""
+        out.append((stem if _CUES.get((stem,)) in _SIDES else token, at))
+    return out
+
+
 # -- reading the query -----------------------------------------------------------------------
 class _Reader:
     """One pass over a query's tokens: cues become relations, the category phrases after them
@@ -101,6 +115,7 @@ class _Reader:
         corrected = normalise(lex.respell(text))
         self.structure = parse_request(corrected)
         kept = [(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"] or t in ("one",)]
+        kept = _side_words(kept, corrected)
         self.toks = toks = [t for t, _ in kept]
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
