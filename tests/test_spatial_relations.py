@@ -261,3 +261,8 @@ def test_where_the_viewer_stands_is_not_a_relation(text, expected):
 ])
 def test_superlative_side_words_and_further(text, expected):
     assert _relations(text) == expected
+
+
+def test_a_thing_placed_by_this_target_is_seen_from_the_target():
+    # "there is a stool by this piano": the piano is the target, with a stool near it
+    assert _relations("There is a wooden stool next to this piano.") == [("near", [("stool",)], "")]

@@ -268,6 +268,10 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
                                   or doc[found].head.lemma_ in _ACTIVITY_VERBS):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
         return ("request" if question else "personal"), found
+    shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
+                  and t.head != subject), None)
+    if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
+        return "description", shown  # "there is a rug under this table": the demonstrative names the target
     if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
         return ("request" if question else "description"), named if named is not None else _attribute_of(doc, root)
     if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:

@@ -173,9 +173,12 @@ class _Reader:
     def points_back(self, word: int) -> bool:
         """True when the parsed `word` stands for the target: a pronoun ("its left", "behind it")
         or the target's kind named again ("to the left of the piano", said of the piano)."""
-        if self.structure.words[word].text.lower() in BACK_REFERENCES | {"its"}:
+        st = self.structure
+        if st.words[word].text.lower() in BACK_REFERENCES | {"its"}:
             return True
         j = self.span_at(word)
+        if j is not None and j == self.target_at and any(st.words[d].text.lower() == "this" for d in st.children(word, "det")):
+            return True  # "there is a rug under this table", said of the table
         return j is not None and self.target_at is not None and j != self.target_at \
             and self.cat_at[j].values("cat") == self.cat_at[self.target_at].values("cat")
 
@@ -212,7 +215,7 @@ class _Reader:
                 or any(self.span_at(k) is not None and not self.points_back(k) for k in below):
             return None
         k = st.words[self.cue_word].head
-        while st.words[k].pos == "ADP" and st.words[k].head != k:
+        while st.words[k].pos in ("ADP", "ADV") and st.words[k].head != k:
             k = st.words[k].head  # "to [its left]": the phrase's own head
         if st.words[k].pos not in ("NOUN", "PROPN"):
             k = next((c for c in range(len(st.words)) if st.words[c].head == k and c != k
