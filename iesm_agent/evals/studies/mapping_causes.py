@@ -35,7 +35,9 @@ VARIANTS: dict[str, tuple[str, Callable[[], MappingConfig]]] = {
     "paper": ("MappingConfig.paper()", MappingConfig.paper),
     "before": ("Ours before cleaning (MappingConfig.uncleaned())", lambda: MappingConfig.uncleaned()),
     "first-cut": ("Ours without depth smoothing (mask erosion 1 px, 3 points per cell)",
-                  lambda: MappingConfig(depth_smooth_px=0, min_cell_points=3)),
+                  lambda: MappingConfig(depth_smooth_px=0, min_cell_points=3, top_fill_max_cos=None)),
+    "no-tops": ("Ours without the tops seen at grazing incidence (top_fill_max_cos=None)",
+                lambda: MappingConfig(top_fill_max_cos=None)),
     "ours": ("Ours (MappingConfig())", MappingConfig),
 }
 
