@@ -15,9 +15,10 @@ POSE = np.array([[1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, CAM_Z], [0, 0, 0, 1]], n
 FRONT_Y, TOP_Z, BOTTOM_Z, BACK_Y = 2.0, 1.2, 0.9, 2.3   # a box 0.3 m deep, its front face 2 m away
 
 
-def _box_frame():
+def _box_frame(wall_y: float = 3.0):
     """(depth (240, 320) m, true depth, mask (1, 240, 320)): a box below the camera, its front face
-    read, its top face (seen at grazing incidence) without readings; columns 140-179."""
+    read, its top face (seen at grazing incidence) without readings, in columns 140-179; above it
+    (smaller rows) a wall `wall_y` m away, read."""
     rows = np.arange(240, dtype=np.float64)[:, None]
     b = (rows - CY) / F + np.zeros((1, 320))           # ray: world z drops by b per metre of depth
     front = (CAM_Z - FRONT_Y * b >= BOTTOM_Z) & (CAM_Z - FRONT_Y * b <= TOP_Z)
@@ -26,9 +27,11 @@ def _box_frame():
     top = (b > 0) & (t_top >= FRONT_Y) & (t_top <= BACK_Y) & ~front
     cols = np.zeros((1, 320), bool)
     cols[0, 140:180] = True
-    truth = np.where(front & cols, FRONT_Y, np.where(top & cols, t_top, 0.0)).astype(np.float32)
-    depth = np.where(front & cols, FRONT_Y, 0.0).astype(np.float32)
-    return depth, truth, ((front | top) & cols)[None]
+    box = (front | top) & cols
+    wall = (rows < np.argmax(box, axis=0)[None, :]) & cols & ~box
+    truth = np.where(front & cols, FRONT_Y, np.where(top & cols, t_top, np.where(wall, wall_y, 0.0))).astype(np.float32)
+    depth = np.where(front & cols, FRONT_Y, np.where(wall, wall_y, 0.0)).astype(np.float32)
+    return depth, truth, box[None]
 
 
 def _fill(depth, masks, max_cos=0.3, max_ratio=1.1):
@@ -74,10 +77,22 @@ def test_no_fill_without_grazing_incidence_beyond_the_ratio_or_below_a_reading()
     assert _fill(holed, masks)[140, 150] == 0.0
 
 
+def test_no_fill_behind_what_is_seen_beyond_the_object():
+    depth, _truth, masks = _box_frame()
+    filled = _fill(depth, masks) != depth
+    assert filled.any()
+    near, _truth, _masks = _box_frame(wall_y=2.1)           # a wall 0.1 m behind the front face
+    out = _fill(near, masks)
+    assert (out[filled & (out != near)] < 2.1).all() and (out != near).sum() < filled.sum()
+    unseen = depth.copy()
+    unseen[depth == 3.0] = 0.0                              # nothing read above the box
+    assert np.array_equal(_fill(unseen, masks), unseen)
+
+
 def test_no_fill_for_a_top_above_the_camera_or_too_few_readings():
     depth, _truth, masks = _box_frame()
     up = depth[::-1].copy()                                 # the image upside down: a face above the camera
-    above = up > 0
+    above = up == FRONT_Y
     rows = np.flatnonzero(above.any(axis=1))
     above[rows[0] - 3:rows[0]] = above[rows[0]]             # with three rows of holes above its readings
     assert np.array_equal(_fill(up, above[None], max_ratio=10.0), up)

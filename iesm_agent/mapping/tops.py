@@ -7,7 +7,9 @@ mask holds the top face, the depth image holds only the front face. Projected, s
 keeps one or two rows of cells of a footprint it should hold whole (on tuning seeds 0-4, 13 of 31
 unmatched stacked objects, and most of the cells they miss had no reading at all). `fill_tops`
 gives those pixels the depth at which their ray meets the horizontal plane at the height of the
-mask's top: where a top face must be if the pixel shows one.
+mask's top: where a top face must be if the pixel shows one, and never behind what the camera
+sees beyond the object (a top cannot reach past the wall seen above it: a towel hanging on a rail
+would otherwise be filled through the wall behind it).
 """
 
 from __future__ import annotations
@@ -32,11 +34,16 @@ def fill_tops(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: fl
     z = h, when h is below the camera and the ray descends to it, the plane would be seen there at
     grazing incidence (|cos| of the ray with the vertical under `max_cos`, the reason a sensor reads
     nothing), and t lies between the depth of the column's highest reading (behind the front edge)
-    and `max_ratio` times it. A pixel filled for one mask keeps that depth (masks in order).
+    and `max_ratio` times it, and before the first reading above the mask in that column (what is
+    seen beyond the object; a column with none above the mask is not filled). A pixel filled for
+    one mask keeps that depth (masks in order).
     """
     out = depth.copy()
     valid = depth > 0
     rot, cam_z = pose[:3, :3], float(pose[2, 3])
+    row_index = np.arange(depth.shape[0])[:, None]
+    # per pixel: the row of the nearest reading at or above it in its column (-1: none)
+    above = np.maximum.accumulate(np.where(valid, row_index, -1), axis=0)
     for m in masks:
         read = m & valid
         pix = np.flatnonzero(read)
@@ -47,8 +54,11 @@ def fill_tops(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: fl
             continue
         cols = np.flatnonzero(read.any(axis=0))
         first = np.argmax(read[:, cols], axis=0)          # row of each column's highest reading
-        rows = np.arange(m.shape[0])[:, None]
-        r, k = np.nonzero(m[:, cols] & (out[:, cols] == 0) & (rows < first[None, :]))
+        top = np.argmax(m[:, cols], axis=0)               # row of each column's highest mask pixel
+        beyond = above[np.maximum(top - 1, 0), cols]      # row of the first reading above the mask
+        seen = (top > 0) & (beyond >= 0)
+        cols, first, beyond = cols[seen], first[seen], beyond[seen]
+        r, k = np.nonzero(m[:, cols] & (out[:, cols] == 0) & (row_index < first[None, :]))
         if not len(r):
             continue
         c = cols[k]
@@ -56,6 +66,7 @@ def fill_tops(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: fl
         down = rot[2, 0] * a + rot[2, 1] * b + rot[2, 2]   # world z of the ray per unit of depth
         t = (h - cam_z) / np.where(down < 0, down, -1.0)
         front = depth[first[k], c]
-        ok = (down < 0) & (-down / np.sqrt(a * a + b * b + 1) < max_cos) & (t >= front) & (t <= max_ratio * front)
+        ok = ((down < 0) & (-down / np.sqrt(a * a + b * b + 1) < max_cos) & (t >= front) & (t <= max_ratio * front)
+              & (t < depth[beyond[k], c]))
         out[r[ok], c[ok]] = t[ok]
     return out
