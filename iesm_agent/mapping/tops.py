@@ -41,31 +41,41 @@ def fill_tops(depth: np.ndarray, masks: np.ndarray, fx: float, fy: float, cx: fl
     out = depth.copy()
     valid = depth > 0
     rot, cam_z = pose[:3, :3], float(pose[2, 3])
-    row_index = np.arange(depth.shape[0])[:, None]
-    # per pixel: the row of the nearest reading at or above it in its column (-1: none)
-    above = np.maximum.accumulate(np.where(valid, row_index, -1), axis=0)
+    width = depth.shape[1]
     for m in masks:
-        read = m & valid
-        pix = np.flatnonzero(read)
-        if len(pix) < min_readings:
+        rows = np.flatnonzero(m.any(axis=1))
+        if not len(rows):
             continue
-        h = float(np.percentile(world_points(depth, pix, fx, fy, cx, cy, pose)[2], TOP_PERCENTILE))
+        span = np.flatnonzero(m.any(axis=0))
+        r0, c0 = int(rows[0]), int(span[0])
+        box = (slice(r0, int(rows[-1]) + 1), slice(c0, int(span[-1]) + 1))
+        mask, read = m[box], m[box] & valid[box]          # the mask's bounding box
+        cols = np.flatnonzero(read.any(axis=0))
+        first = np.argmax(read[:, cols], axis=0)          # row (in the box) of each column's highest reading
+        local = np.arange(mask.shape[0])[:, None]
+        holes = mask[:, cols] & (out[box][:, cols] == 0) & (local < first[None, :])
+        if not holes.any():
+            continue
+        rr, cc = np.nonzero(read)
+        if len(rr) < min_readings:
+            continue
+        h = float(np.percentile(world_points(depth, (rr + r0) * width + cc + c0, fx, fy, cx, cy, pose)[2],
+                                TOP_PERCENTILE))
         if h >= cam_z:
             continue
-        cols = np.flatnonzero(read.any(axis=0))
-        first = np.argmax(read[:, cols], axis=0)          # row of each column's highest reading
-        top = np.argmax(m[:, cols], axis=0)               # row of each column's highest mask pixel
-        beyond = above[np.maximum(top - 1, 0), cols]      # row of the first reading above the mask
-        seen = (top > 0) & (beyond >= 0)
-        cols, first, beyond = cols[seen], first[seen], beyond[seen]
-        r, k = np.nonzero(m[:, cols] & (out[:, cols] == 0) & (row_index < first[None, :]))
+        # the first reading above the mask in each column: what the camera sees beyond the object
+        top = np.argmax(mask[:, cols], axis=0) + r0       # row of each column's highest mask pixel
+        reach = max(int(top.max()), 1)
+        above = valid[:reach, cols + c0] & (np.arange(reach)[:, None] < top[None, :])
+        beyond = np.where(above.any(axis=0), reach - 1 - np.argmax(above[::-1], axis=0), -1)
+        r, k = np.nonzero(holes & (beyond >= 0)[None, :])
         if not len(r):
             continue
-        c = cols[k]
+        r, c = r + r0, cols[k] + c0
         a, b = (c - cx) / fx, (r - cy) / fy
         down = rot[2, 0] * a + rot[2, 1] * b + rot[2, 2]   # world z of the ray per unit of depth
         t = (h - cam_z) / np.where(down < 0, down, -1.0)
-        front = depth[first[k], c]
+        front = depth[first[k] + r0, c]
         ok = ((down < 0) & (-down / np.sqrt(a * a + b * b + 1) < max_cos) & (t >= front) & (t <= max_ratio * front)
               & (t < depth[beyond[k], c]))
         out[r[ok], c[ok]] = t[ok]
