@@ -79,7 +79,8 @@ class MappingConfig(BaseModel):
     # 0-4 (realistic) with `tops.TOP_PERCENTILE` from max cos {0.15, 0.2, 0.3, 0.4} x max depth ratio
     # {1.05, 1.1, 1.2, 1.3} x top percentile {95, 98, 99, 100} (not every combination; docs/results.md):
     # the most stacked objects named right with matched seen objects no lower and Inst. Diff at most
-    # 0.5 per scene higher than without (57.6 / 50 of 103 / 9.2 -> 60.4 / 58 / 9.6)
+    # 0.5 per scene higher than without (57.6 / 50 of 103 / 9.2 -> 60.4 / 58 / 9.6; 9.2 once fills were
+    # also bounded by the first reading beyond the object, `mapping.tops.fill_tops`)
     top_fill_max_cos: Optional[float] = Field(0.3, gt=0, le=1)
     top_fill_max_ratio: float = Field(1.1, ge=1)
 
