@@ -1,7 +1,8 @@
 """Where the CPU of one `find_goal` goes, in-process (no HTTP): the parts of MTEFR with the offline
 model, measured with per-thread CPU time around each part, on the queries `bench_server.py` sends
 in its bursts (first time in the process, then repeated), and the server's own share
-(`MapService.find_goal` on its worker pool, all threads, minus the retrieval alone).
+(`MapService.find_goal` on its worker pool, all threads, minus the retrieval alone; and with the
+model's calls on the server's loop, which shows what the pool's hand-off costs).
 
 Also measured: the English parser one sentence at a time (as a query asked alone is read) against
 `nlp.pipe` over the same sentences in batches of 40, per pipeline component too, and the burst
@@ -40,8 +41,10 @@ PARTS = (("English parser (spaCy)", query, "parse_request"),
          ("offline model answers", OfflineModel, "answer"),
          ("  its prompt reading (read_prompt)", offline_model, "read_prompt"),
          ("  its ranking experts (tasks.rank)", tasks, "rank"),
+         ("    the query's candidate matrix (gate, experts)", tasks, "_candidate_matrix"),
          ("  its spatial expert (spatial.rank)", spatial, "rank"),
          ("  the spatial expert's scene read", spatial, "_read_scene"),
+         ("spatial reading for the experts asked", mtefr, "parse_query"),
          ("prompt rendering (Jinja)", calls.Session, "render"),
          ("prompt hashes for the trace", calls, "prompt_sha256"),
          ("expert replies read", calls.Session, "ranking"),
@@ -88,10 +91,15 @@ async def retrieval_alone(store, asked: list[str]) -> tuple[float, float, collec
     return first, (time.process_time() - t0) * 1000 / len(asked), parts
 
 
-async def served(asked: list[str], rounds: int = 3) -> float:
-    """CPU ms per repeated query of `MapService.find_goal` (worker pool, all threads), median of rounds."""
+async def served(asked: list[str], rounds: int = 3, inline: bool = False) -> float:
+    """CPU ms per repeated query of `MapService.find_goal` (worker pool, all threads), median of
+    rounds; `inline`: the model's calls on the server's loop instead of the pool (what the
+    hand-off to the pool costs)."""
     service = MapService.open(["apartment"])
     await service.warm_up()
+    if inline:
+        retriever = service.retriever(None, "mtefr", None)
+        retriever.model = retriever.model.inner
     for q in asked:
         await service.find_goal(q)
     per_round = []
@@ -155,6 +163,7 @@ def main() -> None:
     asked = pool[40:160]  # bench_server's burst queries
     first, again, parts = asyncio.run(retrieval_alone(MapStore(open_map("apartment")), asked))
     repeated = asyncio.run(served(asked))
+    repeated_inline = asyncio.run(served(asked, inline=True))
     one, batched, per_component = parser_batches([parse.normalise(q) for q in pool])
     parsed, retrieved = asyncio.run(burst_path(MapStore(open_map("apartment")), asked))
     print(f"{len(asked)} queries (bench_server's bursts), CPU ms per query, one thread, no HTTP:")
@@ -162,7 +171,8 @@ def main() -> None:
     for label, ms in parts.most_common():
         print(f"    {label:<36} {ms:6.2f}")
     print(f"  MapService.find_goal on its worker pool, repeated queries, all threads: {repeated:.2f} "
-          f"(server's own share over the retrieval: {repeated - again:+.2f})")
+          f"(server's own share over the retrieval: {repeated - again:+.2f}); with the model's calls on the "
+          f"server's loop instead of the pool: {repeated_inline:.2f}")
     print(f"  burst path: parse_queries in batches of 40 {parsed:.2f}, then retrieval {retrieved:.2f}")
     print(f"  English parser: one sentence at a time {one:.2f} ms, nlp.pipe in batches of 40 {batched:.2f} ms "
           f"({len(pool)} suite queries); per component, alone / batched:")

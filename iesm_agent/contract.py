@@ -44,9 +44,16 @@ def task_line(task: str) -> str:
 
 
 def read_task(text: str) -> str | None:
-    """The task a rendered prompt declares (its first task line), None when it declares none."""
-    match = _TASK_LINE.search(text)
-    return match.group(1) if match and match.group(1) in TASKS else None
+    """The task a rendered prompt declares (its first task line), None when it declares none.
+    The first match of `_TASK_LINE`, tried only where a line starts with "Task:" (`str.find`;
+    the pattern's search tried every position of a 3 kB prompt, about 8 us)."""
+    start = text.find("Task:")
+    while start >= 0:
+        match = _TASK_LINE.match(text, start) if start == 0 or text[start - 1] == "\n" else None
+        if match:
+            return match.group(1) if match.group(1) in TASKS else None
+        start = text.find("Task:", start + 1)
+    return None
 
 
 # -- lenient readers of reply values ------------------------------------------------------------

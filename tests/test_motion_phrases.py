@@ -124,8 +124,8 @@ def test_gerunds_after_a_preposition_are_functions_participles_after_a_noun_are_
 
 
 def test_a_landmark_the_lexicon_does_not_know_leaves_the_spatial_expert_out(retriever):
-    assert parse_query("the picture above the flurbish").unknown_landmark
-    assert not parse_query("the lamp on the far left").unknown_landmark
+    assert parse_query("the picture above the flurbish").relations == []
+    assert [r.kind for r in parse_query("the lamp on the far left").relations] == ["left"]
     res = retriever.ask("the picture hanging above the flurbish")
     # the unknown word is read as no landmark, so no relation: the spatial expert is not asked
     assert "spatial" not in res.experts and any(n.startswith("spatial: not asked") for n in res.notes)
@@ -138,7 +138,8 @@ def test_landmark_colours_are_read_across_colour_suffixes():
 
 def test_a_room_word_before_another_noun_is_that_nouns_room():
     assert analyse_query("a box for the kitchen scraps").rooms == {}
-    assert "office" in analyse_query("the office bookcase").rooms
+    assert analyse_query("the office bookcase").rooms == {"office": 1.0}  # where it stands, as said
+    assert analyse_query("a garage shelf").rooms == {"garage": 1.0}
     assert "bedroom" in analyse_query("a book in the guest room, bound in cloth").rooms
 
 
@@ -156,3 +157,4 @@ def test_what_the_target_is_for_is_not_the_target():
     sq = parse_query("the small cloth for the glasses, on the desk")
     assert "glasses" not in " ".join(sq.target)
     assert parse_query("a cover for the sofa").target[0] == "cover"
+

@@ -192,6 +192,6 @@ def test_repeated_calls_reuse_the_candidate_analysis(model, lib):
     query = "the white ceramic toilet in the bathroom"
     first = [expert(model, lib, name, query) for name in ROLES]
     q = analyse_query(query)
-    assert any(isinstance(k, tuple) and k and k[0] == "block" for k in tasks._memo(q))
+    assert any(isinstance(k, tuple) and k and k[0] == "block" for k in tasks.reading_memo(q))
     assert [expert(model, lib, name, query) for name in ROLES] == first
     assert all(r[0] == 24 for r in first)

@@ -154,3 +154,35 @@ def test_the_offline_reader_cuts_fences_as_the_regular_expression_would():
     for _ in range(3000):
         text = "".join(rng.choice(parts) for _ in range(rng.randint(0, 14)))
         assert _without_fences(text) == pattern.sub(" ", text), text
+
+
+def test_the_offline_reader_finds_tags_as_str_find_would():
+    """`_Tags.find` (tag positions found once per prompt) answers as `str.find` on the text
+    would, for every tag and start, on random mixes of tags, near-tags, stray brackets and text."""
+    import random
+
+    from iesm_agent.providers.offline.prompt import _MARKERS, _Tags
+
+    parts = [*_MARKERS, "a", "b c", "\n", "<", ">", "</", "<<", "<quer", "y>", "<focu", "s>", "</references"]
+    rng = random.Random(11)
+    for _ in range(2000):
+        text = "".join(rng.choice(parts) for _ in range(rng.randint(0, 16)))
+        tags = _Tags(text)
+        for marker in _MARKERS:
+            for start in range(len(text) + 2):
+                assert tags.find(marker, start) == text.find(marker, start), (text, marker, start)
+
+
+def test_the_task_line_is_read_as_the_pattern_searched_everywhere_would():
+    """`read_task` (tried only where a line starts with "Task:") finds what `_TASK_LINE.search`
+    finds, on random mixes of task lines, near-task lines, spaces and newlines."""
+    import random
+
+    parts = ["Task:", "Task: ", "task:", "rank", "gate", "rank-geometry", "rerank", " ", "\n", "\t", "x",
+             "Task:rank", "TTask:", "-", "Task: gate\n"]
+    rng = random.Random(3)
+    for _ in range(5000):
+        text = "".join(rng.choice(parts) for _ in range(rng.randint(0, 12)))
+        match = contract._TASK_LINE.search(text)
+        expected = match.group(1) if match and match.group(1) in contract.TASKS else None
+        assert contract.read_task(text) == expected, text

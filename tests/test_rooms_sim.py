@@ -12,7 +12,7 @@ from iesm_agent.cli import run
 from iesm_agent.sim.ground_truth import GroundTruth
 from iesm_agent.evals.rooms import eval_section
 from iesm_agent.sim.room_labels import ViewpointLabels
-from iesm_agent.evals.studies import parse_seeds
+from iesm_agent.evals.studies import parse_seeds, seeds_note
 from iesm_agent.store import load_map
 
 pytestmark = pytest.mark.slow
@@ -69,6 +69,15 @@ def test_rooms_command_then_eval_section_then_path(built, tmp_path, capsys):
 
 def test_parse_seeds():
     assert parse_seeds("0-2,5") == [0, 1, 2, 5]
+
+
+def test_a_table_on_tuning_seeds_says_so():
+    assert seeds_note("10-14") == "not used for tuning"
+    assert seeds_note("3-6") == "tuning seeds [3, 4] among them: not a held-out figure"
+    from iesm_agent.evals.studies.retrieval import render_table
+
+    header = render_table({"realism": "realistic", "seeds_arg": "0-2", "scenes": [], "skipped": [], "mean": {}})
+    assert "tuning seeds [0, 1, 2] among them" in header and "not used for tuning" not in header
     from iesm_agent.errors import IesmError
 
     with pytest.raises(IesmError, match="seeds"):

@@ -114,6 +114,10 @@ class Structure:
             k = head
         return True
 
+    def children(self, k: int, dep: str) -> list[int]:
+        """Indices of the words the parse attaches to word `k` with relation `dep`."""
+        return [n for n, w in enumerate(self.words) if w.head == k and n != k and w.dep == dep]
+
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""
         for k, word in enumerate(self.words):
@@ -385,14 +389,14 @@ def _attribute_of(doc, root) -> int | None:
 
 
 def _antecedent(doc, index: int) -> int:
-    """The noun a stand-in word points to: "one of the seats" -> seats; "one" -> the last plural
+    """The noun a stand-in word points to: "one of the benches" -> benches; "one" -> the last plural
     noun before it ("of the three pillows, the one in the middle"); "it"/"them" -> the first noun
     named before it as subject or object ("which vase holds tulips? take me to it"); the word
     itself when there is none."""
     of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
     named = next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
                  None) if of else None
-    if named is not None:  # "one of the seats"; "one of them": what "them" stands for
+    if named is not None:  # "one of the benches"; "one of them": what "them" stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
         named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")]

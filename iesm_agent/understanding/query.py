@@ -230,13 +230,6 @@ def _parse_word(structure: Structure, surface: list[str], index: int) -> int | N
     return None if at is None else structure.index_at(at)
 
 
-def _names_a_kind(structure: Structure, surface: list[str], span: Span, target: _Target) -> bool:
-    """True for a room word that modifies the target noun itself ("the dining seat", "a kitchen
-    stool"): it names a kind of thing, whose room it implies, not where this one is."""
-    at = getattr(surface[span.end - 1], "at", None)
-    return at is not None and target.word is not None and structure.modified_noun(at) == target.word
-
-
 @dataclass
 class _Reading:
     """The request's words as the span loop reads them: the spelt text, its parse, the surface
@@ -403,10 +396,6 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if s.has("room") and not (in_target and s.has("cat")):
             if _outside_target(reading.structure, surface, s, target, described, place_ok=True):
                 continue  # "a case for the office papers": the papers' room
-            if _names_a_kind(reading.structure, surface, s, target):
-                for r in s.values("room"):  # "the dining seat": where such seats usually are
-                    info.rooms.setdefault(r, 0.5)
-                continue
             info.rooms.update({r: 1.0 for r in s.values("room")})
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue

@@ -6,6 +6,7 @@ viewpoint ("facing the bed"). Lexicon-driven, from the shared query understandin
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from ..lexicon import load_lexicon
 from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
@@ -79,7 +80,6 @@ class SpatialQuery:
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
-    unknown_landmark: bool = False  # a relation's landmark is a noun the lexicon does not know
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
 
     @property
@@ -177,11 +177,11 @@ class _Reader:
         """True when the side word being read names a side of a landmark: the noun it stands for
         has an "of" ("the right side of the piano", "the left end of a workbench")."""
         k, st = self.cue_noun(), self.structure
-        of = next((n for n, w in enumerate(st.words) if w.head == k and w.dep == "prep" and w.text.lower() == "of"), None)
+        of = next((n for n in st.children(k, "prep") if st.words[n].text.lower() == "of"), None)
         if of is None:
             return False
         owner = self.span_at(k)  # "the left stool of the three stools": which of them, not a landmark
-        objects = [self.span_at(n) for n, w in enumerate(st.words) if w.head == of and w.dep == "pobj"]
+        objects = [self.span_at(n) for n in st.children(of, "pobj")] if of is not None else []
         return owner is None or not any(j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
                                         for j in objects)
 
@@ -347,7 +347,7 @@ class _Reader:
                 (self.word(i).pos == "ADP" and self.structure.words[self.cue_word].dep != "pobj")
                 or (self.structure.words[self.cue_word].dep == "advmod" and self.word(i).dep != "pobj"
                     and self.structure.words[self.cue_word].head == self.words[i])):
-            return i  # "right below the sink", "right next to it": an intensifier, not a side
+            return i  # "right under the basin", "right alongside it": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
@@ -367,17 +367,16 @@ class _Reader:
 
     def takes_object(self) -> bool:
         """True when the cue word is a preposition with an object in the parse ("behind [the sofa]")."""
-        cue = self.cue_word
-        return cue is not None and any(w.head == cue and w.dep == "pobj" for w in self.structure.words)
+        return self.cue_word is not None and bool(self.structure.children(self.cue_word, "pobj"))
 
     def said_by_someone(self, i: int) -> bool:
-        """True when the parse reads token `i` as a verb with a pronoun subject ("I left it",
-        "the biscuits we have left"), not a cue word the tagger merely calls a verb ("facing the
-        door, left bin")."""
-        at = self.words[i]
-        if at is None or self.structure.words[at].pos not in ("VERB", "AUX"):
+        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she
+        left on the hook", "what we have left"), not a cue word the tagger merely calls a verb
+        ("facing the stove, left jar")."""
+        at, st = self.words[i], self.structure
+        if at is None or st.words[at].pos not in ("VERB", "AUX"):
             return False
-        return any(w.head == at and w.dep == "nsubj" and w.pos == "PRON" for w in self.structure.words)
+        return any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
@@ -385,7 +384,7 @@ class _Reader:
         st = self.structure
         if at is None or st.words[st.words[at].head].text.lower() in _LOOKING:
             return False
-        return any(w.head == at and w.dep == "pobj" and self.span_at(k) is not None for k, w in enumerate(st.words))
+        return any(self.span_at(k) is not None for k in st.children(at, "pobj"))
 
     def inverse_by_pronoun(self, kind: str) -> bool:
         """Read the relation seen from the target when the cue places another thing relative to it
@@ -440,9 +439,7 @@ class _Reader:
                 self.used.add(j)
                 return i
             if not self.landmark(rel, i):
-                if _unknown_noun_after(self.lex, toks, self.lemmas, i, self.cat_at):
-                    out.unknown_landmark = True  # "above the ottoman-thing": a landmark we cannot read
-                return i  # "the one on top", "over there": nothing to relate to
+                return i  # "the one on top", "over there", a landmark we cannot read: nothing to relate to
             if kind == "between":
                 self.landmark(rel, i)
         out.relations.append(rel)
@@ -484,19 +481,10 @@ class _Reader:
         return out
 
 
+@lru_cache(maxsize=4096)
 def parse_query(text: str) -> SpatialQuery:
-    """The spatial reading of `text` (no relations when it states none)."""
+    """The spatial reading of `text` (no relations when it states none). Memoised: retrieval's
+    choice of experts, the gate's weighing and the spatial expert of one query share it, so no
+    caller may change it."""
     return _Reader(text).read()
 
-
-def _unknown_noun_after(lex, toks: list[str], lemmas: list[str], i: int, cat_at: dict) -> bool:
-    """True when the words right after a relation cue (up to the next boundary word) hold a
-    content word that no lexicon phrase covers: a landmark the lexicon does not know."""
-    bounds, skip = lex.words["boundaries"], lex.words["skip"]
-    spatial_words = {w for cue in _CUES for w in cue} | set(_EXTREMES) | set(_ORDINALS) | {"far", "very", "just"}
-    for j in range(i, min(len(toks), i + 4)):
-        if j in cat_at or toks[j] in bounds or toks[j] in spatial_words:
-            return False
-        if toks[j] not in skip and toks[j].isalpha() and len(toks[j]) > 2 and not lex.scan([lemmas[j]]):
-            return True
-    return False

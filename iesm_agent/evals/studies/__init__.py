@@ -50,6 +50,13 @@ def check_seeds(seeds: list[int], allow_tuning: bool) -> None:
                         None, "--seeds")
 
 
+def seeds_note(seeds_arg: str, untuned: str = "not used for tuning") -> str:
+    """How a table's seeds stand to tuning: `untuned`, or a warning when any is a tuning seed
+    (a run with --allow-tuning-seeds)."""
+    tuned = sorted(set(parse_seeds(seeds_arg)) & TUNING_SEEDS)
+    return f"tuning seeds {tuned} among them: not a held-out figure" if tuned else untuned
+
+
 def check_profile(realism: str) -> None:
     """Refuse a realism profile the simulator does not have (--realism)."""
     from ...sim.realism import PROFILES

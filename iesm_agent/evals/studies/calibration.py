@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, log_stderr, run_checked, scene_frames, study_command,
                study_main, write_table)
 
 
@@ -71,7 +71,7 @@ def run_study(seeds: list[int], out: Path, realism: str, seeds_arg: str, work: P
                 f"fused {fused['top1_match']:.3f}")
     keys = ("top1", "top1_small_masks", "top1_large_masks", "fused_top1", "fused_auc_match")
     mean = {k: float(np.mean([r[k] for r in rows.values() if r[k] is not None])) for k in keys}
-    lines = [f"Profile `{realism}`, `--size small` walled scenes, seeds {seeds_arg} (not used for tuning).", "",
+    lines = [f"Profile `{realism}`, `--size small` walled scenes, seeds {seeds_arg} ({seeds_note(seeds_arg)}).", "",
              "| seed | matched masks | per-frame top-1 | small masks (< 1500 px) | large masks | fused top-1 (map) | "
              "fused AUC match |", "|---|---:|---:|---:|---:|---:|---:|"]
     fmt = lambda v: "-" if v is None else f"{v:.3f}"  # noqa: E731

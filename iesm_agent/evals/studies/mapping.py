@@ -24,7 +24,7 @@ from ...config import MappingConfig
 from ...frames import FrameSet
 from ...mapping.build import MapBuilder, category_vectors
 from ...sim.ground_truth import GroundTruth
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, log_stderr, run_checked, scene_frames, study_command,
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, log_stderr, run_checked, scene_frames, study_command,
                study_main, write_table)
 from ..baseline2d import PointwiseMap2D
 from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwise, score
@@ -128,7 +128,7 @@ def table_markdown(mean: dict, per_scene: dict[str, dict], realism: str, seeds_a
     gt = np.mean([r["scene"]["gt_instances"] for r in per_scene.values()])
     small = sorted({c for r in per_scene.values() for c in r["scene"]["small_categories"]})
     single = np.mean([r["scene"]["single_view"]["ours"] for r in per_scene.values()])
-    lines = [f"Profile `{realism}`; seeds {seeds_arg} (not used for tuning); mean over {len(per_scene)} simulated "
+    lines = [f"Profile `{realism}`; seeds {seeds_arg} ({seeds_note(seeds_arg)}); mean over {len(per_scene)} simulated "
              f"scenes ({', '.join(per_scene)}; {gt:.1f} ground-truth instances seen per scene). Higher is better "
              "except Inst. Diff. '-': not defined for the 2D baseline, whose instances are the ground-truth masks by "
              "construction (as in the paper's Table 1). The 2D baseline's 'match' columns cover every ground-truth "

@@ -17,7 +17,7 @@ import statistics
 from pathlib import Path
 from typing import Optional
 
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_frames, scene_rows, study_command,
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, run_checked, scene_frames, scene_rows, study_command,
                study_main, write_table)
 
 TYPES = ("o", "or", "od", "ord", "ard")
@@ -63,7 +63,7 @@ def _pct(v) -> str:
 
 
 def render_table(summary: dict) -> str:
-    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} (not used for tuning); simulated "
+    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} ({seeds_note(summary['seeds_arg'])}); simulated "
              "`--size small` scenes, built maps with rooms (simulator labels) and offline captions; queries from "
              "ground truth (`evals/gt_queries.py`, types " + ",".join(TYPES) + ", 10 per type, seed = scene seed, "
              "targets among the objects the frames show; "

@@ -18,7 +18,7 @@ import statistics
 from pathlib import Path
 from typing import Optional
 
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_frames, scene_rows, study_command,
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, run_checked, scene_frames, scene_rows, study_command,
                study_main, write_table)
 
 METHODS = {"baseline": "per-cell labels (CLIP-like baseline)", "lsd": "LSD components + majority (paper)",
@@ -68,8 +68,9 @@ def _per_seed_table(summary: dict) -> list[str]:
 def render_table(summary: dict) -> str:
     covered = statistics.fmean(r["baseline"]["cells"] / r["room_cells"] for rows in summary["scenes"].values()
                                for r in rows) if any(summary["scenes"].values()) else 0.0
-    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} (not used for tuning: the split's "
-             "thresholds were set on seeds 0-4); built maps (`iesm sim` + `iesm build-map`), simulated "
+    untuned = "not used for tuning: the split's thresholds were set on seeds 0-4"
+    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} ({seeds_note(summary['seeds_arg'], untuned)}); "
+             "built maps (`iesm sim` + `iesm build-map`), simulated "
              "viewpoint-dependent per-cell labels from every depth pixel (`sim/room_labels.py`); metrics as defined "
              "in `iesm_agent/evals/rooms.py` (Acc/mAcc/mIoU over the ground-truth room cells the per-cell labels "
              f"cover, the same cells for every method: {covered:.1%} of room cells; per-room precision/recall by best "

@@ -15,7 +15,7 @@ import statistics
 from pathlib import Path
 from typing import Optional
 
-from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, run_checked, scene_frames, scene_rows, study_command,
+from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, run_checked, scene_frames, scene_rows, study_command,
                study_main, write_table)
 
 KEYS = ("ours", "vlmaps", "hovsg", "vs_vlmaps", "vs_hovsg")
@@ -59,7 +59,7 @@ def mean_rows(rows: list[dict]) -> dict:
 def render_table(summary: dict) -> str:
     from ..storage import ASSUMPTIONS
 
-    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} (not used for tuning); simulated "
+    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']} ({seeds_note(summary['seeds_arg'])}); simulated "
              "`--size small` scenes (hm3d-sized scenes are too slow for a study run, so absolute sizes are smaller "
              "than the paper's); map built with the default MappingConfig, rooms from the simulator's viewpoint "
              "labels, offline captions. Baselines are sized, not run: " + ASSUMPTIONS + ".", "",

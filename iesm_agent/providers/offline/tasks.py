@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import threading
 import weakref
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any, Callable
 
@@ -37,14 +38,15 @@ def gate(prompt: Prompt) -> dict:
 _ON_MAP_FIT = 0.6
 
 
-def _named_on_map(q: QueryInfo, lines: list[str]) -> bool:
+def _named_on_map(q: QueryInfo, lines: tuple[str, ...]) -> bool:
     """True when some candidate's label is the category the query names (or a kind of it), or
     when the prompt shows no candidates to check against. Reads the label fit of the scorer's
     candidate matrix, which the experts' prompts of the same query reuse."""
     if not q.named:
         return True
-    ids, _, comp = _candidate_matrix(q, _parse_candidates(lines))
-    return not len(ids) or float(comp[:, _LABEL].max()) >= _ON_MAP_FIT
+    block = _parse_candidates(lines)
+    comp = _candidate_matrix(q, block)
+    return not len(block.ids) or float(comp[:, _LABEL].max()) >= _ON_MAP_FIT
 
 
 def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]:
@@ -129,23 +131,22 @@ _FIRST, _SECOND = 100.0, 10.0
 def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     """Top-kappa candidate ids, ranked by the evidence the expert's focus line names first
     (category, room, appearance or function; every kind of evidence for a prompt without a
-    focus). `encoder()` gives the sentence encoder (or None); it is asked for only when
-    embedding similarity would count, or to ground words the lexicon does not know."""
+    focus). `encoder()` gives the sentence encoder (or None): how close the whole request is to
+    each candidate's label and caption counts for every request, beside the lexicon's reading."""
     q = analyse_query(prompt.query)
-    parsed = _parse_candidates(prompt.candidate_lines)
+    block = _parse_candidates(prompt.candidate_lines)
     if q.unknown_target or q.unknown_room:
         enc = encoder() if encoder is not None else None
-        q = ground_query(q, [r.room for _, r in parsed if r.room], [r.label for _, r in parsed if r.label], enc)
-    ids, records, comp = _candidate_matrix(q, parsed)
+        q = ground_query(q, block.rooms, block.labels, enc)
+    ids, records = block.ids, block.records
     if not len(ids):
         return {"ranked_instance_ids": []}
+    comp = _candidate_matrix(q, block)
     role = focus_role(prompt.focus) if prompt.focus else "all"
     lexical = bool(q.targets or q.afford)
-    wants_embeddings = not lexical or q.attrs or q.extra
-    enc = encoder() if encoder is not None and wants_embeddings else None
+    enc = encoder() if encoder is not None else None
     if enc is not None:
-        comp = comp.copy()
-        comp[:, _EMB] = _embedding_scores(enc, q.text, records)
+        comp = _with_embeddings(q, comp, enc, records)
     scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
     scores = scores + _TIE_BREAK * comp.sum(axis=1)
     ruled_out = _ruled_out(q, records)
@@ -277,24 +278,62 @@ def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
 _ROLE_SCORES = {"obj": _score_obj, "room": _score_room, "desc": _score_desc, "abs": _score_abs, "all": _score_all}
 
 
-def _parse_candidates(lines: list[str]) -> list[tuple[int, Record]]:
-    """(id, record) of each readable candidate line, first occurrence of an id only."""
-    return list(_parse_candidate_block(tuple(lines)))
+@dataclass(frozen=True, eq=False)
+class _Block:
+    """A fenced candidate block as the ranking reads it, once per distinct block: its candidates
+    (first occurrence of an id only, in order) and what the scorer looks up per candidate, indexed
+    so that a query scores each distinct category, room and label once and gathers the rows with
+    numpy (a query's gate and experts, and the queries on one map, show the same block)."""
+
+    ids: np.ndarray                       # (N,) int64 candidate ids
+    records: list[Record]                 # (N,) their lexical profiles
+    rooms: list[str]                      # the rooms and labels present, as `ground_query` takes them
+    labels: list[str]
+    concepts: tuple[str, ...]             # (C,) the distinct categories of the candidates' labels
+    pair_row: np.ndarray                  # (P,) int64 candidate row of each (candidate, category) pair
+    pair_concept: np.ndarray              # (P,) int64 index into `concepts`
+    pair_weight: np.ndarray               # (P,) float64 the category's weight in that label
+    label_words: tuple[frozenset[str], ...]        # (L,) distinct label lemma sets
+    label_words_of: np.ndarray            # (N,) int64 index into `label_words`
+    room_keys: tuple[tuple[str | None, frozenset[str]], ...]  # (R,) distinct (room, room name lemmas)
+    room_key_of: np.ndarray               # (N,) int64 index into `room_keys`
 
 
 @lru_cache(maxsize=64)
-def _parse_candidate_block(lines: tuple[str, ...]) -> tuple[tuple[int, Record], ...]:
-    """`_parse_candidates` memoised by the lines: a query's expert prompts share one candidate
-    block (about 0.04 ms per block of 100 lines). The records are `candidate_from_line`'s own
-    (memoised there), so a hit returns the very objects a miss would."""
-    out: list[tuple[int, Record]] = []
+def _parse_candidates(lines: tuple[str, ...]) -> _Block:
+    """The readable candidate lines as a `_Block`, memoised by the lines (`read_prompt` gives the
+    same tuple for the same block text). The records are `candidate_from_line`'s own (memoised
+    there), so a hit returns the very objects a miss would."""
+    parsed: list[tuple[int, Record]] = []
     seen: set[int] = set()
     for line in lines:
-        parsed = candidate_from_line(line)
-        if parsed is not None and parsed[0] not in seen:
-            seen.add(parsed[0])
-            out.append(parsed)
-    return tuple(out)
+        one = candidate_from_line(line)
+        if one is not None and one[0] not in seen:
+            seen.add(one[0])
+            parsed.append(one)
+    records = [r for _, r in parsed]
+    concepts: dict[str, int] = {}
+    pairs = [(row, concepts.setdefault(c, len(concepts)), w)
+             for row, r in enumerate(records) for c, w in r.concepts]
+    label_words: dict[frozenset[str], int] = {}
+    room_keys: dict[tuple[str | None, frozenset[str]], int] = {}
+    block = _Block(
+        ids=np.array([i for i, _ in parsed], dtype=np.int64), records=records,
+        rooms=[r.room for r in records if r.room], labels=[r.label for r in records if r.label],
+        concepts=tuple(concepts),
+        pair_row=np.array([p[0] for p in pairs], dtype=np.int64),
+        pair_concept=np.array([p[1] for p in pairs], dtype=np.int64),
+        pair_weight=np.array([p[2] for p in pairs], dtype=np.float64),
+        label_words_of=np.array([label_words.setdefault(r.label_words, len(label_words)) for r in records],
+                                dtype=np.int64),
+        label_words=tuple(label_words),
+        room_key_of=np.array([room_keys.setdefault((r.room, r.room_words), len(room_keys)) for r in records],
+                             dtype=np.int64),
+        room_keys=tuple(room_keys))
+    for array in (block.ids, block.pair_row, block.pair_concept, block.pair_weight, block.label_words_of,
+                  block.room_key_of):
+        array.flags.writeable = False  # shared by every prompt showing the block
+    return block
 
 
 #: per reading, the scorer's values that recur across a query's prompts (the reading itself is
@@ -303,8 +342,8 @@ _MEMOS: "weakref.WeakKeyDictionary[QueryInfo, dict]" = weakref.WeakKeyDictionary
 _MEMOS_LOCK = threading.Lock()
 
 
-def _memo(q: QueryInfo) -> dict:
-    """The scorer's cache for reading `q` (the same dict for every prompt of one query)."""
+def reading_memo(q: QueryInfo) -> dict:
+    """The offline model's cache for reading `q` (the same dict for every prompt of one query)."""
     with _MEMOS_LOCK:
         memo = _MEMOS.get(q)
         if memo is None:
@@ -312,55 +351,59 @@ def _memo(q: QueryInfo) -> dict:
         return memo
 
 
-def _candidate_matrix(q: QueryInfo, parsed: list[tuple[int, Record]]) -> tuple[np.ndarray, list[Record], np.ndarray]:
-    """(ids, records, components (N, 7)) for the parsed candidates; memoised per query on the
-    whole block (the same block comes with each expert prompt)."""
-    key = ("block", tuple(i for i, _ in parsed), tuple(id(r) for _, r in parsed))
-    memo = _memo(q)
+def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
+    """(N, 7) components of the block's candidates for `q`: label, room, description,
+    affordance, text overlap, embedding (0 here: see `_with_embeddings`), kin. Memoised per
+    query and block (the same block comes with each expert prompt); each distinct category,
+    label and room is scored once per query.
+
+    A candidate's label, function and kin fit are the best of weight x fit over its label's
+    categories (0 when none fits); a label that fits gets 0.05 x the share of the query's head
+    words it says literally."""
+    memo = reading_memo(q)
+    key = ("block", id(block))
     hit = memo.get(key)
-    if hit is not None:
-        return hit
+    if hit is not None and hit[0] is block:
+        return hit[1]
     lex = load_lexicon()
-    records = [r for _, r in parsed]
-    rows = [_components(lex, q, r, memo) for r in records]
-    out = (np.array([i for i, _ in parsed], dtype=np.int64), records,
-           np.array(rows, dtype=np.float64).reshape(len(rows), _N_COMPONENTS))
+    n = len(block.records)
+    comp = np.zeros((n, _N_COMPONENTS), dtype=np.float64)
+    if len(block.pair_row):
+        fits = _concept_fits(block, _weights_key(q.targets), _weights_key(q.afford), _weights_key(q.kin))
+        products = block.pair_weight[:, None] * fits[block.pair_concept]
+        best = np.zeros((n, 3), dtype=np.float64)
+        np.maximum.at(best, block.pair_row, products)
+        comp[:, _LABEL], comp[:, _AFFORD], comp[:, _KIN] = best[:, 0], best[:, 1], best[:, 2]
+    if q.head_words:  # the label literally says (part of) what the query says
+        said = np.array([0.05 * len(q.head_words & words) / len(q.head_words) for words in block.label_words])
+        label = comp[:, _LABEL]
+        comp[:, _LABEL] = np.where(label != 0.0, label + said[block.label_words_of], label)
+    comp[:, _ROOM] = np.array([_room_fit(lex, q, room, words, memo) for room, words in block.room_keys],
+                              dtype=np.float64).reshape(-1)[block.room_key_of]
+    if q.slots:
+        comp[:, _DESC] = [sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
+                          for r in block.records]
+    if q.overlap:
+        comp[:, _TEXT] = [len(q.overlap & r.stems) / len(q.overlap) for r in block.records]
+    comp.flags.writeable = False  # shared by the query's gate and experts
     if len(memo) < 4096:
-        memo[key] = out
-    return out
+        memo[key] = (block, comp)
+    return comp
 
 
-def _components(lex, q: QueryInfo, r: Record, memo: dict) -> tuple[float, ...]:
-    """label, room, description, affordance, text overlap, embedding (filled in later), kin.
-
-    Memoised per query on the parts candidates share (single concepts, rooms, attribute slots),
-    so a value that recurs across candidates is scored once per query."""
-    label = afford = kin = 0.0
-    for cc, wc in r.concepts:
-        key = ("c", cc)
-        sims = memo.get(key)
-        if sims is None:
-            sims = memo[key] = _concept_fit(lex, q, cc)
-        label = max(label, wc * sims[0])
-        afford = max(afford, wc * sims[1])
-        kin = max(kin, wc * sims[2])
-    if label and q.head_words:  # the label literally says (part of) what the query says
-        label += 0.05 * len(q.head_words & r.label_words) / len(q.head_words)
-    key = ("r", r.room, r.room_words)
-    room = memo.get(key)
-    if room is None:
-        room = max((w * lex.room_sim(qr, r.room) for qr, w in q.rooms.items() if r.room is not None), default=0.0)
+def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], memo: dict) -> float:
+    """How well a candidate's room fits the rooms the query names (memoised per query)."""
+    key = ("r", room, room_words)
+    fit = memo.get(key)
+    if fit is None:
+        fit = max((w * lex.room_sim(qr, room) for qr, w in q.rooms.items() if room is not None), default=0.0)
         asked = memo.get(("asked room",))
         if asked is None:  # the words the request names its room with, once per query
             asked = memo[("asked room",)] = frozenset(lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha())
-        if room and asked and not asked <= r.room_words:  # "the master bedroom": not the guest bedroom
-            room *= _OTHER_NAMED_ROOM
-        memo[key] = room
-    desc = 0.0
-    if q.slots:
-        desc = sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
-    text = len(q.overlap & r.stems) / len(q.overlap) if q.overlap else 0.0
-    return label, room, desc, afford, text, 0.0, kin
+        if fit and asked and not asked <= room_words:  # "the master bedroom": not the guest bedroom
+            fit *= _OTHER_NAMED_ROOM
+        memo[key] = fit
+    return fit
 
 
 def _slot_match(lex, q: QueryInfo, index: int, r: Record, memo: dict) -> float:
@@ -408,10 +451,32 @@ def _slot_sim(lex, slot: Slot, other: Slot) -> float:
     return 0.0
 
 
-def _concept_fit(lex, q: QueryInfo, cc: str) -> tuple[float, float, float]:
-    """(category fit, function fit, functional-kin fit) of one candidate category for the query."""
-    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in q.targets.items()), default=0.0)
-    return label, _by_kind(lex, q.afford, cc), _by_kind(lex, q.kin, cc)
+def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
+    """A hashable form of a query's category weights (the fits below do not depend on their order)."""
+    return tuple(sorted(weights.items()))
+
+
+@lru_cache(maxsize=512)
+def _concept_fits(block: _Block, targets: tuple[tuple[str, float], ...], afford: tuple[tuple[str, float], ...],
+                  kin: tuple[tuple[str, float], ...]) -> np.ndarray:
+    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for,
+    to the functions it asks for and to their functional kin (`_concept_fit`). Memoised by the
+    block and the three weightings: queries asking for the same things score a map's categories
+    once ("the recliner in the den" and "the grey recliner" alike)."""
+    lex = load_lexicon()
+    targets_, afford_, kin_ = dict(targets), dict(afford), dict(kin)
+    fits = np.array([_concept_fit(lex, targets_, afford_, kin_, cc) for cc in block.concepts],
+                    dtype=np.float64).reshape(-1, 3)
+    fits.flags.writeable = False
+    return fits
+
+
+def _concept_fit(lex, targets: dict[str, float], afford: dict[str, float], kin: dict[str, float],
+                 cc: str) -> tuple[float, float, float]:
+    """(category fit, function fit, functional-kin fit) of one candidate category for a query
+    asking for `targets`, `afford` and `kin` (category or function -> weight)."""
+    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in targets.items()), default=0.0)
+    return label, _by_kind(lex, afford, cc), _by_kind(lex, kin, cc)
 
 
 def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
@@ -422,6 +487,22 @@ def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
     for parent in lex.ancestors.get(cc, ()):
         fit = max(fit, 0.8 * weights.get(parent, 0.0))
     return fit
+
+
+def _with_embeddings(q: QueryInfo, comp: np.ndarray, encoder, records: list[Record]) -> np.ndarray:
+    """A copy of `comp` (a `_candidate_matrix`) with its embedding column filled, memoised per
+    query, matrix and encoder: the experts of one query that weigh embeddings ask for the same."""
+    memo = reading_memo(q)
+    key = ("embeddings", id(comp), id(encoder))
+    hit = memo.get(key)
+    if hit is not None and hit[0] is comp and hit[1] is encoder:
+        return hit[2]
+    out = comp.copy()
+    out[:, _EMB] = _embedding_scores(encoder, q.text, records)
+    out.flags.writeable = False
+    if len(memo) < 4096:
+        memo[key] = (comp, encoder, out)
+    return out
 
 
 def _embedding_scores(encoder, query: str, records: list[Record]) -> np.ndarray:
