@@ -97,9 +97,10 @@ class MappingConfig(BaseModel):
 
     @classmethod
     def uncleaned(cls, **values: Any) -> "MappingConfig":
-        """Our association on uncleaned geometry (every mask pixel with depth counts, every cell)."""
+        """Our association as before issue 29 (strong-overlap link at 0.7) on uncleaned geometry
+        (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "top_fill_max_cos": None, **values})
+                      "top_fill_max_cos": None, "delta_geo_strong": 0.7, **values})
 
 
 class RetrievalConfig(BaseModel):
