@@ -142,7 +142,7 @@ def draw_fragments(crops: list[dict], path: Path) -> None:
         ax.set_xticks([])
         ax.set_yticks([])
     fig.suptitle("Split fragments (5 cm cells): grey = the object's observed footprint, blue / orange = its two "
-                 "instances, purple = both", fontsize=8)
+                 "instances, purple = both", fontsize=8, y=1.1)
     save_figure(fig, path)
 
 
