@@ -227,8 +227,9 @@ def fragment_tables(rows: list[dict]) -> list[str]:
              "and the same object. Each is given the association rule the pair fails as built "
              "(evals/mapping_causes.py `fragment_cause`): overlap, cosine under the thresholds (phi_geo > "
              "delta_geo but not linkable); touching (cells shared or adjacent: the continuity merge's reach) with "
-             "a cosine at most delta_sem_continuous, or shapes that do not continue each other (two compact "
-             "footprints; planar ones not collinear); footprints apart. Association has no height or label gate, "
+             "no continuity merge (the paper's rules), a cosine at most delta_sem_continuous, or shapes that do "
+             "not continue each other (two compact footprints; planar ones not collinear); footprints apart; "
+             "linkable as built (the pair grew after it was compared). Association has no height or label gate, "
              "so neither can keep a pair apart. Mean per scene (extra instances: same label / other label; "
              "fragment pairs: totals over the scenes).", "",
              "| configuration | extra instances | " + " | ".join(FRAGMENT_CAUSES) + " |",
