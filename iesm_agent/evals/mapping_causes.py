@@ -28,7 +28,8 @@ import numpy as np
 from ..config import MappingConfig
 from ..frames import FrameSet
 from ..store.model import SceneMap
-from ..mapping.cells import intersections
+from ..mapping.association import continues, linkable, phi_geo, planar_line
+from ..mapping.cells import dilate, intersections, keys_of
 from .matching import match_instances
 
 #: share of an object's observed cells an own instance must cover to explain it
@@ -149,8 +150,6 @@ FRAGMENT_CAUSES = ("overlap, cosine under the thresholds", "touching, no continu
 def grid_keys(flat: np.ndarray, grid) -> np.ndarray:
     """Global cell keys (`mapping.cells`, cells of `grid.cell_size`) of the centres of flat cells
     `flat` of `grid` (a `GridSpec`)."""
-    from ..mapping.cells import keys_of
-
     rows, cols = np.divmod(np.asarray(flat, np.int64), max(grid.width, 1))
     return keys_of(np.floor(grid.origin[1] / grid.cell_size + rows + 0.5).astype(np.int64),
                    np.floor(grid.origin[0] / grid.cell_size + cols + 0.5).astype(np.int64))
@@ -167,11 +166,9 @@ def fragment_cause(keys_a: np.ndarray, keys_b: np.ndarray, cos: float, cfg: Mapp
     """Which association rule keeps two instances (top-down masks `keys_a`, `keys_b`, sorted cell
     keys; embedding cosine `cos`) apart, one of `FRAGMENT_CAUSES`: their masks overlap by phi_geo >
     delta_geo but the pair is not `linkable`; they share or touch cells (the continuity merge's
-    reach) but there is no continuity merge (`MappingConfig.paper()`), the cosine is at most delta_sem_continuous, or their shapes do not `continue` each
-    other (both compact, or planar and not collinear); no cell within reach ("footprints apart")."""
-    from ..mapping.association import continues, linkable, phi_geo, planar_line
-    from ..mapping.cells import dilate
-
+    reach) but there is no continuity merge (`MappingConfig.paper()`), the cosine is at most
+    delta_sem_continuous, or their shapes do not `continue` each other (both compact, or planar and
+    not collinear); no cell within reach ("footprints apart")."""
     inter = len(np.intersect1d(keys_a, keys_b, assume_unique=True))
     geo = float(phi_geo(np.array([inter]), np.array([len(keys_a)]), np.array([len(keys_b)]))[0])
     if geo > cfg.delta_geo:
@@ -188,6 +185,12 @@ def fragment_cause(keys_a: np.ndarray, keys_b: np.ndarray, cos: float, cfg: Mapp
         return "linkable as built"
     compact = planar_line(keys_a, cfg.cell_size) is None and planar_line(keys_b, cfg.cell_size) is None
     return "touching, compact shapes" if compact else "touching, planar shapes not collinear"
+
+
+def _cosine(scene: SceneMap, row: dict[int, int], a: int, b: int) -> float:
+    """Cosine of the (unit) embeddings of instances `a` and `b` (`row`: id -> embedding row); 1
+    for a map without embeddings."""
+    return float(scene.embeddings[row[a]] @ scene.embeddings[row[b]]) if scene.embeddings is not None else 1.0
 
 
 def same_label_pairs(scene: SceneMap, main: dict[int, int], labels: dict[int, str],
@@ -208,12 +211,11 @@ def same_label_pairs(scene: SceneMap, main: dict[int, int], labels: dict[int, st
             for b in group[k + 1:]:
                 ma, mb = main.get(a.id), main.get(b.id)
                 same = ma is not None and ma == mb
-                cos = (float(scene.embeddings[row[a.id]] @ scene.embeddings[row[b.id]])
-                       if scene.embeddings is not None else 1.0)
                 wrong = not same and any(labels.get(m, label).lower() != label.lower() for m in (ma, mb) if m is not None)
                 out.append({"label": label, "a": a.id, "b": b.id, "same_object": same, "named_wrong": wrong,
                             "shared_frames": len(set(a.frames) & set(b.frames)),
-                            "cause": fragment_cause(keys[a.id], keys[b.id], cos, cfg) if same else None})
+                            "cause": (fragment_cause(keys[a.id], keys[b.id], _cosine(scene, row, a.id, b.id), cfg)
+                                      if same else None)})
     return out
 
 
@@ -234,8 +236,7 @@ def extra_instances(scene: SceneMap, main: dict[int, int], cfg: MappingConfig) -
         group.sort(key=lambda inst: (-inst.weight, -len(keys.get(inst.id, ())), inst.id))
         first = group[0]
         for inst in group[1:]:
-            cos = (float(scene.embeddings[row[first.id]] @ scene.embeddings[row[inst.id]])
-                   if scene.embeddings is not None else 1.0)
+            cos = _cosine(scene, row, first.id, inst.id)
             out.append({"object": obj, "primary": first.id, "extra": inst.id, "same_label": inst.label == first.label,
                         "cause": fragment_cause(keys[first.id], keys[inst.id], cos, cfg)})
     return out
