@@ -55,3 +55,64 @@ def test_stacked_groups_count_ours_and_the_baselines_names():
     assert groups["inflated"] == {"objects": 1, "baseline_right": 1}
     assert groups["partial"] == {"objects": 1, "baseline_right": 0}
     assert sum(g["objects"] for g in groups.values()) == 4        # object 9 is not stacked
+
+
+def _rect(r0: int, r1: int, c0: int, c1: int) -> np.ndarray:
+    """Sorted global cell keys of rows r0..r1, cols c0..c1 (inclusive)."""
+    from iesm_agent.mapping.cells import keys_of
+
+    rows, cols = np.meshgrid(np.arange(r0, r1 + 1), np.arange(c0, c1 + 1), indexing="ij")
+    return np.sort(keys_of(rows.ravel(), cols.ravel()))
+
+
+def test_fragment_cause_names_the_rule_that_keeps_two_pieces_apart():
+    from iesm_agent.config import MappingConfig
+    from iesm_agent.evals.mapping_causes import fragment_cause
+
+    cfg = MappingConfig(delta_geo_strong=0.7)
+    chair = _rect(0, 9, 0, 9)
+    # a view seen once, half inside the chair's footprint, embedding pulled away (cosine 0.7)
+    piece = _rect(5, 14, 0, 9)
+    assert fragment_cause(chair, piece, 0.7, cfg) == "overlap, cosine under the thresholds"
+    assert fragment_cause(chair, piece, 0.7, MappingConfig()) == "linkable as built"   # the default links it
+    beside = _rect(10, 16, 0, 9)                                          # touching, no shared cell
+    assert fragment_cause(chair, beside, 0.5, cfg) == "touching, cosine under the continuity threshold"
+    assert fragment_cause(chair, beside, 0.9, cfg) == "touching, compact shapes"
+    assert fragment_cause(chair, beside, 0.9, MappingConfig.paper()) == "touching, no continuity merge"
+    wall, crossing = _rect(0, 1, 0, 39), _rect(2, 41, 0, 1)              # an L
+    assert fragment_cause(wall, crossing, 0.95, cfg) == "touching, planar shapes not collinear"
+    assert fragment_cause(wall, _rect(0, 1, 42, 79), 0.95, cfg) == "footprints apart"   # a 2-cell gap
+
+
+def test_same_label_pairs_and_extra_instances_tell_fragments_from_neighbours():
+    from iesm_agent.config import MappingConfig
+    from iesm_agent.evals.mapping_causes import extra_instances, same_label_pairs
+    from iesm_agent.store.model import GridSpec, Instance, InstanceGrid, SceneMap
+
+    grid = GridSpec(cell_size=0.05, height=40, width=40)
+
+    def flat(r0, r1, c0, c1):
+        rows, cols = np.meshgrid(np.arange(r0, r1 + 1), np.arange(c0, c1 + 1), indexing="ij")
+        return (rows * 40 + cols).ravel()
+
+    cells = {1: flat(0, 9, 0, 9), 2: flat(10, 16, 0, 9), 3: flat(20, 29, 20, 29), 4: flat(0, 4, 30, 34)}
+    labels = {1: "armchair", 2: "armchair", 3: "armchair", 4: "pillow"}
+    weights = {1: 5.0, 2: 1.0, 3: 4.0, 4: 1.0}
+    occ = InstanceGrid.from_entries(np.concatenate(list(cells.values())),
+                                    np.concatenate([np.full(len(c), i) for i, c in cells.items()]),
+                                    np.concatenate([np.full(len(c), 0.9, np.float32) for c in cells.values()]))
+    emb = np.eye(4, dtype=np.float32)
+    emb[1] = [0.95, np.sqrt(1 - 0.95 ** 2), 0, 0]                          # the piece: cosine 0.95 with 1
+    scene = SceneMap(scene_id="t", grid=grid, occupancy=occ, embeddings=emb,
+                     instances=[Instance(id=i, label=labels[i], mean_height=0.5, weight=weights[i], frames=[i])
+                                for i in cells])
+    # instance 1 and its piece 2 show object 7 (an armchair); 3 another armchair; 4 a sofa's cushion
+    main = {1: 7, 2: 7, 3: 8, 4: 7}
+    gt_labels = {7: "armchair", 8: "armchair"}
+    pairs = {(p["a"], p["b"]): p for p in same_label_pairs(scene, main, gt_labels, MappingConfig())}
+    assert set(pairs) == {(1, 2), (1, 3), (2, 3)}
+    assert pairs[(1, 2)]["same_object"] and pairs[(1, 2)]["cause"] == "touching, compact shapes"
+    assert not pairs[(1, 3)]["same_object"] and pairs[(1, 3)]["cause"] is None and not pairs[(1, 3)]["named_wrong"]
+    extras = extra_instances(scene, main, MappingConfig())
+    assert [(e["primary"], e["extra"], e["same_label"]) for e in extras] == [(1, 2, True), (1, 4, False)]
+    assert extras[1]["cause"] == "footprints apart"

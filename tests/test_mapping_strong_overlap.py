@@ -30,9 +30,12 @@ def _unit(angle_deg: float) -> np.ndarray:
 
 
 def test_default_links_strong_overlap_on_weaker_semantics_and_paper_does_not():
-    geo, sem = np.array([0.9, 0.9, 0.5, 0.9]), np.array([0.7, 0.5, 0.7, 0.9])
-    assert linkable(geo, sem, MappingConfig()).tolist() == [True, False, False, True]
-    assert linkable(geo, sem, MappingConfig.paper()).tolist() == [False, False, False, True]
+    geo, sem = np.array([0.9, 0.9, 0.5, 0.9, 0.3]), np.array([0.7, 0.5, 0.7, 0.9, 0.9])
+    # an overlap of half (a view seen once, its embedding pulled towards another category) links
+    # by default on cosine 0.7; the paper's rule needs 0.85; no overlap above 0.4 never links
+    assert linkable(geo, sem, MappingConfig()).tolist() == [True, False, True, True, False]
+    assert linkable(geo, sem, MappingConfig.paper()).tolist() == [False, False, False, True, False]
+    assert not linkable(np.array([0.5]), np.array([0.7]), MappingConfig(delta_geo_strong=0.7))[0]
     # thresholds are strict, as the paper's
     cfg = MappingConfig()
     assert not linkable(np.array([cfg.delta_geo_strong]), np.array([0.8]), cfg)[0]
@@ -73,8 +76,9 @@ def test_a_second_view_with_scattered_embedding_fuses_but_a_cup_on_the_table_sta
 
 def test_settings_can_switch_the_link_off():
     off = {"mapping.delta_geo_strong": None, "mapping.continuity_gap": None}
-    assert load_settings(overrides=off).mapping == MappingConfig.paper(mask_erode_px=1, depth_smooth_px=7)
-    off |= {"mapping.mask_erode_px": 0, "mapping.depth_smooth_px": 0}
+    assert load_settings(overrides=off).mapping == MappingConfig.paper(mask_erode_px=1, depth_smooth_px=7,
+                                                                       top_fill_max_cos=0.3)
+    off |= {"mapping.mask_erode_px": 0, "mapping.depth_smooth_px": 0, "mapping.top_fill_max_cos": None}
     assert load_settings(overrides=off).mapping == MappingConfig.paper()
     assert MappingConfig.paper(delta_sem=0.8).delta_sem == 0.8
     with pytest.raises(ValidationError):

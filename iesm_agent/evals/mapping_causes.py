@@ -28,7 +28,8 @@ import numpy as np
 from ..config import MappingConfig
 from ..frames import FrameSet
 from ..store.model import SceneMap
-from ..mapping.cells import intersections
+from ..mapping.association import continues, linkable, phi_geo, planar_line
+from ..mapping.cells import dilate, intersections, keys_of
 from .matching import match_instances
 
 #: share of an object's observed cells an own instance must cover to explain it
@@ -136,3 +137,106 @@ def cause_counts(causes: dict[int, str]) -> dict[str, int]:
     """Number of objects per cause, every cause listed."""
     counts = Counter(causes.values())
     return {c: int(counts.get(c, 0)) for c in CAUSES}
+
+
+#: why two instances whose masks show one object stayed apart, by the association rule the pair
+#: fails as built (`fragment_cause`, tested in this order; "linkable as built" = the pair would link
+#: now, having grown after it was compared)
+FRAGMENT_CAUSES = ("overlap, cosine under the thresholds", "touching, no continuity merge",
+                   "touching, cosine under the continuity threshold", "touching, compact shapes",
+                   "touching, planar shapes not collinear", "footprints apart", "linkable as built")
+
+
+def grid_keys(flat: np.ndarray, grid) -> np.ndarray:
+    """Global cell keys (`mapping.cells`, cells of `grid.cell_size`) of the centres of flat cells
+    `flat` of `grid` (a `GridSpec`)."""
+    rows, cols = np.divmod(np.asarray(flat, np.int64), max(grid.width, 1))
+    return keys_of(np.floor(grid.origin[1] / grid.cell_size + rows + 0.5).astype(np.int64),
+                   np.floor(grid.origin[0] / grid.cell_size + cols + 0.5).astype(np.int64))
+
+
+def instance_keys(scene: SceneMap) -> dict[int, np.ndarray]:
+    """{instance id: its top-down mask as sorted global cell keys (`mapping.cells`)} of a built map."""
+    flat, ids, _top = scene.occupancy.entries()
+    keys = grid_keys(flat, scene.grid)
+    return {int(i): np.unique(keys[ids == i]) for i in np.unique(ids).tolist()}
+
+
+def fragment_cause(keys_a: np.ndarray, keys_b: np.ndarray, cos: float, cfg: MappingConfig) -> str:
+    """Which association rule keeps two instances (top-down masks `keys_a`, `keys_b`, sorted cell
+    keys; embedding cosine `cos`) apart, one of `FRAGMENT_CAUSES`: their masks overlap by phi_geo >
+    delta_geo but the pair is not `linkable`; they share or touch cells (the continuity merge's
+    reach) but there is no continuity merge (`MappingConfig.paper()`), the cosine is at most
+    delta_sem_continuous, or their shapes do not `continue` each other (both compact, or planar and
+    not collinear); no cell within reach ("footprints apart")."""
+    inter = len(np.intersect1d(keys_a, keys_b, assume_unique=True))
+    geo = float(phi_geo(np.array([inter]), np.array([len(keys_a)]), np.array([len(keys_b)]))[0])
+    if geo > cfg.delta_geo:
+        return "linkable as built" if linkable(np.array([geo]), np.array([cos]), cfg)[0] else \
+            "overlap, cosine under the thresholds"
+    reach = 1 + int(round((cfg.continuity_gap or 0.0) / cfg.cell_size))
+    if not len(np.intersect1d(dilate(keys_a, reach), keys_b, assume_unique=True)):
+        return "footprints apart"
+    if cfg.continuity_gap is None:
+        return "touching, no continuity merge"
+    if cos <= cfg.delta_sem_continuous:
+        return "touching, cosine under the continuity threshold"
+    if continues(keys_a, keys_b, cfg.cell_size):
+        return "linkable as built"
+    compact = planar_line(keys_a, cfg.cell_size) is None and planar_line(keys_b, cfg.cell_size) is None
+    return "touching, compact shapes" if compact else "touching, planar shapes not collinear"
+
+
+def _cosine(scene: SceneMap, row: dict[int, int], a: int, b: int) -> float:
+    """Cosine of the (unit) embeddings of instances `a` and `b` (`row`: id -> embedding row); 1
+    for a map without embeddings."""
+    return float(scene.embeddings[row[a]] @ scene.embeddings[row[b]]) if scene.embeddings is not None else 1.0
+
+
+def same_label_pairs(scene: SceneMap, main: dict[int, int], labels: dict[int, str],
+                     cfg: MappingConfig) -> list[dict]:
+    """Every pair of instances of a built map that carry the same label: {"label", "a", "b" (ids),
+    "same_object" (both instances' main object, `mask_attribution`, is one ground-truth object: a
+    split fragment), "named_wrong" (for different objects: one of them is of another category than
+    the label, `labels` = gt id -> category), "shared_frames" (frames both were seen in), "cause"
+    (`fragment_cause`, split fragments only, else None)}."""
+    keys = instance_keys(scene)
+    row = {inst.id: k for k, inst in enumerate(scene.instances)}
+    by_label: dict[str, list] = {}
+    for inst in scene.instances:
+        by_label.setdefault(inst.label, []).append(inst)
+    out = []
+    for label, group in sorted(by_label.items()):
+        for k, a in enumerate(group):
+            for b in group[k + 1:]:
+                ma, mb = main.get(a.id), main.get(b.id)
+                same = ma is not None and ma == mb
+                wrong = not same and any(labels.get(m, label).lower() != label.lower() for m in (ma, mb) if m is not None)
+                out.append({"label": label, "a": a.id, "b": b.id, "same_object": same, "named_wrong": wrong,
+                            "shared_frames": len(set(a.frames) & set(b.frames)),
+                            "cause": (fragment_cause(keys[a.id], keys[b.id], _cosine(scene, row, a.id, b.id), cfg)
+                                      if same else None)})
+    return out
+
+
+def extra_instances(scene: SceneMap, main: dict[int, int], cfg: MappingConfig) -> list[dict]:
+    """The instances beyond one per ground-truth object (what Instance Diff counts over the seen
+    objects): for every object that is the main object (`mask_attribution`) of several instances,
+    each but the heaviest (most fused observations; ties: more cells, lower id) as {"object",
+    "primary", "extra" (ids), "same_label" (the extra carries the primary's label), "cause"
+    (`fragment_cause` of the pair)}."""
+    keys = instance_keys(scene)
+    row = {inst.id: k for k, inst in enumerate(scene.instances)}
+    by_object: dict[int, list] = {}
+    for inst in scene.instances:
+        if main.get(inst.id) is not None:
+            by_object.setdefault(main[inst.id], []).append(inst)
+    out = []
+    for obj, group in sorted(by_object.items()):
+        group.sort(key=lambda inst: (-inst.weight, -len(keys.get(inst.id, ())), inst.id))
+        first = group[0]
+        for inst in group[1:]:
+            cos = _cosine(scene, row, first.id, inst.id)
+            out.append({"object": obj, "primary": first.id, "extra": inst.id, "same_label": inst.label == first.label,
+                        "cause": fragment_cause(keys[first.id], keys[inst.id], cos, cfg)})
+    return out

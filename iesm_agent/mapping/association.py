@@ -5,10 +5,12 @@ top-down masks; phi_sem is the cosine of the two embeddings; phi = w_geo phi_geo
 A candidate matches the instance with the largest phi among the linkable pairs; none linkable
 means a new instance. The paper's rule (`MappingConfig.paper()`): a pair is linkable when it passes
 BOTH thresholds, phi_geo > delta_geo and phi_sem > delta_sem. The default adds one more linkable
-case (`linkable`): top-down masks that nearly coincide, phi_geo > delta_geo_strong, need only
-phi_sem > delta_sem_weak, because per-view embeddings of one object scatter (realistic simulator:
-median view-to-view cosine ~0.89, one pair in five under 0.85) while different objects sharing a
-footprint (a cup on a table: max-overlap 1) stay far apart in embedding space.
+case (`linkable`): top-down masks that overlap, phi_geo > delta_geo_strong (0.4, the paper's
+delta_geo), need only phi_sem > delta_sem_weak, because per-view embeddings of one object scatter
+(realistic simulator: median view-to-view cosine ~0.89, one pair in five under 0.85; a view seen
+once and named as another category becomes a second instance of its object, a split fragment)
+while different objects sharing a footprint (a cup on a table: max-overlap 1) stay far apart in
+embedding space.
 
 After association (not in the paper; `MappingConfig.paper()` turns it off) the continuity merge
 (`InstanceDictionary.merge_continuous`) links instances whose top-down masks touch but do not

@@ -16,6 +16,7 @@ from ..store.model import SceneMap
 from .clean import clean_masks, smooth_depth
 from .dictionary import InstanceDictionary
 from .project import project_candidates
+from .tops import fill_tops
 
 TEXT_SPACES = ("all-MiniLM-L6-v2", "hash-384")  # spaces `text_vectors` embeds categories in
 UNLABELLED = "object"  # the label of instances from a segmenter without categories
@@ -37,6 +38,9 @@ class MapBuilder:
                  else frame.depth)
         masks = clean_masks(seg.masks, depth, erode_px=cfg.mask_erode_px, edge_jump=cfg.depth_edge_jump,
                             min_pixels=cfg.min_mask_pixels)
+        if cfg.top_fill_max_cos is not None:
+            depth = fill_tops(depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, max_cos=cfg.top_fill_max_cos,
+                              max_ratio=cfg.top_fill_max_ratio, min_readings=cfg.min_mask_pixels)
         cands = project_candidates(depth, masks, k.fx, k.fy, k.cx, k.cy, frame.pose, cfg.cell_size,
                                    min_pixels=cfg.min_mask_pixels, max_depth=cfg.max_depth,
                                    min_cell_points=cfg.min_cell_points)

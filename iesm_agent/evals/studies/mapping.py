@@ -31,7 +31,7 @@ from ..mapping import EvalContext, prediction_from_map, prediction_from_pointwis
 
 METHODS = ("ours", "ours_no_second_pass", "ours_uncleaned", "paper", "pointwise_2d", "pointwise_2d_same")
 TITLES = {"ours": "Ours (2.5D)", "ours_no_second_pass": "Ours w/o second pass",
-          "ours_uncleaned": "Ours without geometry cleaning (MappingConfig.uncleaned())",
+          "ours_uncleaned": "Ours before issue 29 (no geometry cleaning, MappingConfig.uncleaned())",
           "paper": "Paper's rules (MappingConfig.paper())", "pointwise_2d": "2D point-wise + GT mask",
           "pointwise_2d_same": "2D point-wise + GT mask, on the objects ours matched"}
 #: the baseline's rows: its instances are the ground-truth masks, so instance counts are undefined;
