@@ -309,9 +309,10 @@ def _telegraphic_target(root) -> int:
 
 def _copula_attribute(root) -> int | None:
     """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
-    left": the copula or one joined to it), or None."""
+    left": the copula or one joined to it; "it is the one on the left": the stand-in, for its
+    antecedent), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
-                 for c in verb.children if c.dep_ == "attr" and c.pos_ in NOUNS), None)
+                 for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
