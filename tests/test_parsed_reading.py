@@ -39,7 +39,7 @@ def _target(text: str) -> str | None:
     ("The jug is on the shelf. Not on the piano.", "jug"),                    # a negated fragment rules out
     ("The object is a footstool. It stands by the piano.", "footstool"),               # a placeholder named by its copula
     ("Facing the piano, it's on the shelf, and is the jar on the right.", "jar"),  # a joined copula names it
-    ("Looking towards the stools, it is the one on the right.", "stools"),    # "the one" a copula names: its antecedent
+    ("Looking towards the stools, it is the one nearest the oven.", "stools"),    # "the one" a copula names: its antecedent
     ("There is a footstool beside this recliner.", "recliner"),                # the demonstrative names the target
     ("A kettle sits on the shelf above this worktop.", "worktop"),
     ("Is there a lamp near this desk?", "lamp"),                                # a question asks for the other
