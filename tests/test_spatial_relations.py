@@ -266,3 +266,20 @@ def test_superlative_side_words_and_further(text, expected):
 def test_a_thing_placed_by_this_target_is_seen_from_the_target():
     # "there is a stool by this piano": the piano is the target, with a stool near it
     assert _relations("There is a wooden stool next to this piano.") == [("near", [("stool",)], "")]
+
+
+def test_the_one_in_the_middle_of_a_stack_or_a_row(tmp_path):
+    # three crates stacked in one corner, three vases in a row on a far shelf: "in the middle"
+    # without "of the room" is the middle one of the target's kind, upwards as well as along
+    stack = make_store(tmp_path, [
+        box(1, "box", (0.5, 0.5, 0.15), (0.4, 0.4, 0.3)),
+        box(2, "box", (0.5, 0.5, 0.45), (0.4, 0.4, 0.3)),
+        box(3, "box", (0.5, 0.5, 0.75), (0.4, 0.4, 0.3)),
+        box(4, "vase", (3.6, 3.8, 1.2), (0.1, 0.1, 0.2)),
+        box(5, "vase", (3.9, 3.8, 1.2), (0.1, 0.1, 0.2)),
+        box(6, "vase", (4.2, 3.8, 1.2), (0.1, 0.1, 0.2)),
+        box(7, "table", (2.5, 2.0, 0.4), (1.0, 1.0, 0.8)),
+    ], name="stack")
+    assert spatial(stack, "pick the crate sitting in the middle")[0] == 2
+    assert spatial(stack, "the vase in the middle")[0] == 5
+    assert spatial(stack, "the vase nearest the middle of the room")[0] == 4

@@ -362,7 +362,7 @@ class _Reader:
                 self.used.add(j)
                 out.facing = tuple(self.cat_at[j].values("cat"))
             return i
-        if (kind in ("corner", "middle") and nxt == "of") or (kind == "middle" and self.describes_target()):
+        if kind in ("corner", "middle") and nxt == "of":
             return self.place_of(i, kind)
         if kind == "middle" and self.says_which_landmark(kind):
             return i
@@ -374,6 +374,9 @@ class _Reader:
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
+            return i
+        if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind
+            out.relations.append(Relation(kind, value="group"))
             return i
         return self.landmark_relation(i, kind, nxt)
 
@@ -391,24 +394,14 @@ class _Reader:
         return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
             bool(subjects) or st.words[k].dep in ("advcl", "ROOT", "pcomp"))
 
-    def describes_target(self) -> bool:
-        """True when the cue word is an adjective on the target noun or a stand-in for it ("the
-        middle drawer", "the middle one"), not on a landmark ("the cup on the middle shelf")."""
-        st, k = self.structure, self.cue_word
-        if k is None or st.words[k].dep not in ("amod", "compound"):
-            return False
-        head = st.words[k].head
-        return self.span_at(head) == self.target_at or self.points_back(head) or st.words[head].text.lower() in TARGET_PRONOUNS
-
     def place_of(self, i: int, kind: str) -> int:
-        """"the middle of X", "the corner of X", "the middle X": relative to the object X; the
-        middle one of the target's own kind ("of the three vases", or said of the target itself);
-        the room's middle or corner when X is no object ("of the room", read for itself, so a
-        clause on it keeps its own relation)."""
+        """"the middle of X", "the corner of X": relative to the object X; the middle one of the
+        target's own kind ("of the three vases"); the room's middle or corner when X is no object
+        ("of the room", read for itself, so a clause on it keeps its own relation)."""
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
         objects |= {o for k in objects if self.span_at(k) is None for p in st.children(k, "prep")
                     if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
-        if kind == "middle" and (self.describes_target() or any(self.points_back(k) for k in objects)):
+        if kind == "middle" and any(self.points_back(k) for k in objects):
             rel.value = "group"
         elif any(self.span_at(k) is not None for k in objects):
             self.landmark(rel, i)
@@ -418,9 +411,10 @@ class _Reader:
     def says_which_landmark(self, kind: str) -> bool:
         """True when the cue word is on a landmark's noun, not the target's ("on the left bench",
         "by the middle window"): it says which of the landmark's instances (`landmark_where`)."""
-        owner = self.span_at(self.cue_noun())
-        if owner is None or owner == self.target_at or self.target_at is None:
-            return False
+        noun = self.cue_noun()
+        owner = self.span_at(noun)
+        if owner is None or owner == self.target_at or self.target_at is None or self.points_back(noun):
+            return False  # on the target's own noun or its kind named again ("facing the vases, the left vase")
         described = next((r for r in self.out.relations if owner in self.taken.get(id(r), ())), None)
         if described is not None and not described.landmark_where:
             described.landmark_where = kind

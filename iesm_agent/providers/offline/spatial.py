@@ -209,9 +209,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         if len(marks) < 2:
             marks.append(marks[0])
         return _rank_score(-geo.segment_distance(tb, marks[0], marks[1]))
-    if kind == "middle" and rel.value == "group":  # the middle one of the target's kind
-        c = tb.center[:, :2]
-        return _rank_score(-np.hypot(*(c - c.mean(axis=0)).T))
+    if kind == "middle" and rel.value == "group":  # the middle one of the target's kind: of a row or a stack
+        return _rank_score(-np.linalg.norm(tb.center - tb.center.mean(axis=0), axis=1))
     if kind == "middle" and marks:
         return _rank_score(-geo.center_distance(tb, marks[0]).min(axis=1))
     if kind in ("corner", "middle", "wall"):
