@@ -315,7 +315,7 @@ class _Reader:
             return i + 1  # "the clock face": a noun, not "face the window"
         if words == ("at",) and not self.beside(self.words[i]):
             return i + 1
-        if kind != "facing" and self.viewer_place():  # "when standing in the middle of the room": where the viewer is
+        if kind != "facing" and self.viewer_place():  # "when standing by the door, ...": where the viewer is
             self.landmark(Relation(kind), i + len(words))  # its noun is no target
             return i + len(words)
         if is_destination(toks, i, len(words)):
