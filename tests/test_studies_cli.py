@@ -32,6 +32,10 @@ def test_tuning_seeds_are_refused_before_any_work(tmp_path, capsys):
     assert study_main("demo", "A demo study.", demo_study(ran),
                       ["--seeds", "2-3", "--allow-tuning-seeds", "--out", str(tmp_path / "out")]) == 0
     assert ran == [[2, 3]]
+    # the table's rebuilding command carries the flag its tuning seeds need, and only then
+    out = (tmp_path / "out").as_posix()
+    assert (f"`python -m iesm_agent.evals.studies.demo --seeds 2-3 --realism realistic --allow-tuning-seeds "
+            f"--out {out}`") in (tmp_path / "out" / "table.md").read_text()
 
 
 def test_an_unknown_profile_or_option_is_refused_with_status_2(tmp_path, capsys):

@@ -133,9 +133,11 @@ AllowTuningSeeds = Annotated[bool, typer.Option("--allow-tuning-seeds", help="fo
 
 
 def study_command(module: str, seeds_arg: str, realism: str, out: Path, *extra: str) -> str:
-    """The exact command that rebuilds a study's table (written at the top of table.md)."""
+    """The exact command that rebuilds a study's table (written at the top of table.md), with
+    --allow-tuning-seeds when the seeds include tuning seeds (the command refuses them otherwise)."""
+    tuning = ["--allow-tuning-seeds"] if set(parse_seeds(seeds_arg)) & TUNING_SEEDS else []
     return " ".join([f"python -m iesm_agent.evals.studies.{module} --seeds {seeds_arg} --realism {realism}",
-                     *extra, f"--out {out.as_posix()}"])
+                     *tuning, *extra, f"--out {out.as_posix()}"])
 
 
 def scene_rows(seeds: list[int], score: Callable[[int], dict], describe: Callable[[dict], str],

@@ -111,8 +111,7 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
             causes = [err["cause"] for err in result["errors"]]
             log(f"{realism} seed {seed}: {result['n_wrong']} of {result['n_matched']} matched mislabelled; "
                 + ", ".join(f"{c} {causes.count(c)}" for c in CAUSES))
-    command = study_command("label_errors", seeds_arg, realism, out,
-                            *(["--allow-tuning-seeds"] if set(seeds) & set(range(5)) else []))
+    command = study_command("label_errors", seeds_arg, realism, out)
     write_table(out, f"Mislabelled matched instances by cause ({realism} profile)", command,
                 table_markdown(per_scene, realism, seeds_arg),
                 {"seeds": seeds, "realism": realism, "scenes": per_scene})

@@ -274,8 +274,7 @@ def run_study(seeds: list[int], out: Path, *, realism: str = "realistic", seeds_
             log(f"{realism} seed {seed}: " + "; ".join(
                 f"{name} matched {result[name]['n_matched']}/{result[name]['n_gt']} {result[name]['causes']}"
                 for name in VARIANTS))
-    command = study_command("mapping_causes", seeds_arg, realism, out,
-                            *(["--allow-tuning-seeds"] if set(seeds) & set(range(5)) else []))
+    command = study_command("mapping_causes", seeds_arg, realism, out)
     write_table(out, f"Unmatched seen objects by cause ({realism} profile)", command,
                 table_markdown(per_scene, realism, seeds_arg),
                 {"seeds": seeds, "realism": realism, "scenes": per_scene})
