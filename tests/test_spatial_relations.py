@@ -270,7 +270,7 @@ def test_a_thing_placed_by_this_target_is_seen_from_the_target():
 
 def test_the_one_in_the_middle_of_a_stack_or_a_row(tmp_path):
     # three crates stacked in one corner, three vases in a row on a far shelf: "in the middle"
-    # without "of the room" is the middle one of the target's kind, upwards as well as along
+    # without "of" a room is the middle one of the target's kind, upwards as well as along
     stack = make_store(tmp_path, [
         box(1, "box", (0.5, 0.5, 0.15), (0.4, 0.4, 0.3)),
         box(2, "box", (0.5, 0.5, 0.45), (0.4, 0.4, 0.3)),
@@ -282,4 +282,4 @@ def test_the_one_in_the_middle_of_a_stack_or_a_row(tmp_path):
     ], name="stack")
     assert spatial(stack, "pick the crate sitting in the middle")[0] == 2
     assert spatial(stack, "the vase in the middle")[0] == 5
-    assert spatial(stack, "the vase nearest the middle of the room")[0] == 4
+    assert spatial(stack, "the vase nearest the middle of the bedroom")[0] == 4

@@ -309,7 +309,7 @@ def _telegraphic_target(root) -> int:
 
 def _copula_attribute(root) -> int | None:
     """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
-    left": the copula or one joined to it; "it is the one on the left": the stand-in, for its
+    left": the copula or one joined to it; "it is the one nearest the oven": the stand-in, for its
     antecedent), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                  for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
@@ -401,7 +401,7 @@ def _antecedent(doc, index: int) -> int:
     of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
     named = next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
                  None) if of else None
-    if named is not None:  # "one of the benches"; "one of them": what "them" stands for
+    if named is not None:  # a partitive ("one of the benches"), or of a plural pronoun: what that stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
         named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")]

@@ -397,7 +397,7 @@ class _Reader:
     def place_of(self, i: int, kind: str) -> int:
         """"the middle of X", "the corner of X": relative to the object X; the middle one of the
         target's own kind ("of the three vases"); the room's middle or corner when X is no object
-        ("of the room", read for itself, so a clause on it keeps its own relation)."""
+        (a room named after "of" is read for itself, so a clause on it keeps its own relation)."""
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
         objects |= {o for k in objects if self.span_at(k) is None for p in st.children(k, "prep")
                     if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
