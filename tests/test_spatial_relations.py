@@ -283,3 +283,32 @@ def test_the_one_in_the_middle_of_a_stack_or_a_row(tmp_path):
     assert spatial(stack, "pick the crate sitting in the middle")[0] == 2
     assert spatial(stack, "the vase in the middle")[0] == 5
     assert spatial(stack, "the vase nearest the middle of the bedroom")[0] == 4
+
+
+# Three seats in a row along the north wall of a study: an office chair, a chair, an office chair
+# (on a rug); a window beyond them, a wall lamp over the middle one; a desk with its lamp, a floor
+# lamp beside it.
+SEATS = [
+    box(1, "office chair", (1.0, 3.5, 0.45), (0.5, 0.5, 0.9)),
+    box(2, "chair", (2.0, 3.5, 0.45), (0.5, 0.5, 0.9)),
+    box(3, "office chair", (3.0, 3.5, 0.45), (0.5, 0.5, 0.9)),
+    box(4, "window", (3.6, 3.98, 1.5), (1.0, 0.04, 1.2)),
+    box(5, "wall lamp", (2.0, 3.98, 1.8), (0.2, 0.1, 0.2)),
+    box(6, "lamp", (3.2, 0.5, 0.5), (0.3, 0.3, 1.0)),
+    box(7, "rug", (3.0, 3.3, 0.005), (1.2, 1.2, 0.01)),
+    box(8, "desk", (4.5, 0.5, 0.375), (1.0, 0.6, 0.75)),
+    box(9, "desk lamp", (4.5, 0.5, 0.95), (0.2, 0.2, 0.4)),
+]
+
+
+@pytest.mark.parametrize("query, best", [
+    # the plain chair is second nearest to the window: the name it is asked by settles a near tie
+    ("the chair closest to the window", 2),
+    ("the office chair closest to the window", 3),
+    # a relation one seat meets and the other does not still decides: an office chair is a chair
+    ("the chair standing on the rug", 3),
+    # a word the landmark supplies is no extra word: the desk lamp is as literally "the lamp" here
+    ("the lamp closest to the desk", 9),
+])
+def test_literal_name_breaks_near_ties_only(tmp_path, query, best):
+    assert spatial(make_store(tmp_path, SEATS), query)[0] == best
