@@ -312,3 +312,47 @@ SEATS = [
 ])
 def test_literal_name_breaks_near_ties_only(tmp_path, query, best):
     assert spatial(make_store(tmp_path, SEATS), query)[0] == best
+
+
+def _extremes(text: str) -> list[str]:
+    return [r.value for r in parse_query(text).relations if r.kind == "extreme"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a height word on the target's own noun, or the target "on top" / "at the bottom"
+    ("grab the bottom drawer", ["low"]),
+    ("the upper cupboard over the hob", ["high"]),
+    ("the mug that sits on top", ["high"]),
+    ("the crate at the bottom", ["low"]),
+    # on another thing's noun, or said of what lies on the target: not the target's height
+    ("the mug on the top shelf", []),
+    ("the dresser that has a radio resting on top", []),
+    # a place on a plan ("top left") and a described top ("a marble top") are not heights
+    ("the stool in the top left corner", []),
+    ("the marble top table", []),
+])
+def test_height_words(text, expected):
+    assert _extremes(text) == expected
+
+
+def test_a_verb_particle_is_no_place_but_a_two_word_cue_is():
+    assert _relations("pick the armchair across from the sofa") == [("opposite", [("sofa",)], "")]
+    assert _relations("switch off the lamp") == []
+
+
+# Two boxes on a long bench; four smaller ones on the floor against its end.
+BOXES = [
+    box(1, "bench", (1.0, 1.0, 0.25), (2.0, 0.6, 0.5)),
+    box(2, "box", (0.5, 1.0, 0.7), (0.4, 0.4, 0.4)),
+    box(3, "box", (1.5, 1.0, 0.75), (0.5, 0.5, 0.5)),
+    box(4, "box", (2.15, 1.0, 0.15), (0.3, 0.3, 0.3)),
+    box(5, "box", (2.15, 0.5, 0.125), (0.25, 0.25, 0.25)),
+    box(6, "box", (2.1, 1.5, 0.1), (0.2, 0.2, 0.2)),
+    box(7, "box", (2.08, 0.75, 0.08), (0.15, 0.15, 0.15)),
+]
+
+
+def test_a_comparison_is_made_among_what_meets_the_contact_relations(tmp_path):
+    store = make_store(tmp_path, BOXES)
+    assert spatial(store, "the smaller box on the bench")[0] == 2
+    assert spatial(store, "the smallest box")[0] == 7

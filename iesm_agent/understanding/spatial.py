@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from ..lexicon import load_lexicon
+from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
 from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import Word, normalise, parse_request
@@ -33,7 +33,11 @@ _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger"
              "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
              "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
              "higher": "high", "lowest": "low", "lower": "low", "widest": "wide", "wider": "wide",
-             "longest": "wide", "longer": "wide"}
+             "longest": "wide", "longer": "wide", "upper": "high", "uppermost": "high", "topmost": "high",
+             "lowermost": "low", "bottommost": "low"}
+#: nouns that place the target in height when they modify a noun ("the top drawer") or are the
+#: object of "on" or "at" with no "of" ("the one on top")
+_HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
 _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
              "fifth": 5, "5th": 5, "last": -1}
 #: relations a side or middle word names, also made superlative ("rightmost")
@@ -127,6 +131,8 @@ class _Reader:
                        and not (s.end - s.start == 1 and toks[s.start].endswith("ing")
                                 and lemmas[s.start] != toks[s.start])}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+        #: token positions right after a colour, material or shape word ("glass [top]")
+        self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
         self.out = SpatialQuery()
         self.used: set[int] = set()
@@ -261,6 +267,30 @@ class _Reader:
         objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
         return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
 
+    def height_word(self, i: int) -> bool:
+        """True when token `i` is "top" or "bottom" saying where the target sits in height: a
+        modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
+        "of" said of the target ("the cup on top"); not before a side or corner ("the top left
+        corner": a place on a plan)."""
+        if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None:
+            return False
+        if i + 1 < len(self.toks) and (_CUES.get((self.toks[i + 1],)) in _SIDES or self.toks[i + 1] == "corner"):
+            return False
+        st, k = self.structure, self.words[i]
+        word = st.words[k]
+        if st.children(k, "amod") or st.children(k, "compound") or i in self.part_described:
+            return False  # the top itself described ("a glass top table"): a part, not a height
+        if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place
+            return self.target_at is not None and self.span_at(word.head) == self.target_at
+        if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") \
+                or any(st.words[c].text.lower() == "of" for c in st.children(k, "prep")):
+            return False
+        owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
+        if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a book lying on top")
+            subject = next(iter(st.children(owner, "nsubj")), None)
+            owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
+        return owner is not None and (self.span_at(owner) == self.target_at or self.points_back(owner))
+
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`."""
         j = self.next_cat(pos)
@@ -285,8 +315,8 @@ class _Reader:
                 i += 1
             elif i in self.cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
                 i = self.cat_at[i].end
-            elif toks[i] in _EXTREMES:
-                out.relations.append(Relation("extreme", value=_EXTREMES[toks[i]]))
+            elif toks[i] in _EXTREMES or self.height_word(i):
+                out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS[toks[i]]))
                 i += 1
             elif toks[i] in _ORDINALS:
                 self.pending_ordinal = Relation("ordinal", order=_ORDINALS[toks[i]], value="left")
@@ -309,8 +339,9 @@ class _Reader:
         words, kind = cue
         self.cue_word = self.words[i + len(words) - 1]
         stranded = kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals)
-        if self.word(i).dep == "prt" and not stranded:
-            return i + len(words)  # "switch on the lamp": a particle of the verb, not a place
+        if self.word(i + len(words) - 1).dep == "prt" and not stranded:
+            return i + len(words)  # "switch on the lamp": a particle of the verb, not a place (but
+            # "pick the one across [from] the sofa": a cue's last word with its object is one)
         if words == ("face",) and self.word(i).pos != "VERB":
             return i + 1  # "the clock face": a noun, not "face the window"
         if words == ("at",) and not self.beside(self.words[i]):

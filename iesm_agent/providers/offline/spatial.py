@@ -181,6 +181,11 @@ def _view(scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> tuple[np.nd
     return viewer, (look / norm if norm > 1e-6 else np.array([0.0, 1.0]))
 
 
+#: relations of contact, met or not by the geometry; a candidate that meets one scores at least _MET
+_CONTACT = ("on", "under", "above", "below", "with")
+_MET = 0.7
+
+
 def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> np.ndarray | None:
     """(len(targets),) scores in [0, 1]; None when a landmark is missing from the map."""
     boxes = scene.boxes
@@ -201,7 +206,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
     if not marks and kind in ("on", "under", "above", "below", "with", "near", "closest", "farthest", "between",
                               "opposite"):
         return None  # the query's landmark could not be read: no guess
-    if kind in ("on", "under", "above", "below", "with"):
+    if kind in _CONTACT:
         lm = marks[0]
         if kind == "on":
             hit = geo.rests_on(tb, lm) | np.array([[int(i) in scene.on[t] for i in lm.ids] for t in targets])
@@ -215,8 +220,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             hit = geo.rests_on(lm, tb).T
         close = np.exp(-geo.center_distance(tb, lm))
         near = np.exp(-geo.xy_gap(tb, lm) / geo.NEAR_GAP)
-        # satisfied: 0.7 + up to 0.3 for the closest landmark; otherwise a little for being near
-        return np.where(hit, 0.7 + 0.3 * close, (0.5 if kind == "with" else 0.15) * near).max(axis=1)
+        # satisfied: _MET + up to 0.3 for the closest landmark; otherwise a little for being near
+        return np.where(hit, _MET + 0.3 * close, (0.5 if kind == "with" else 0.15) * near).max(axis=1)
     if kind in ("near", "closest", "farthest"):
         lm = marks[0]
         gap = geo.xy_gap(tb, lm) + 0.25 * geo.center_distance(tb, lm)
@@ -311,11 +316,20 @@ def rank(prompt: Prompt) -> dict:
     total = np.zeros(len(targets))
     if sq.target and reading.head_words:
         total += _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
+    placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
+    comparisons = [rel for rel in sq.relations if rel.kind == "extreme" and not rel.negated]
     for rel in sq.relations:
+        if rel in comparisons:
+            continue
         scores = _relation_scores(rel, scene, targets, facing)
         if scores is None:
             return abstain("a landmark the map lacks")  # no guess
         total += 1.0 - scores if rel.negated else scores
+        if rel.kind in _CONTACT and not rel.negated:
+            placed &= scores >= _MET
+    among = placed if placed.any() else np.ones(len(targets), bool)
+    for rel in comparisons:  # "the upper of the books on the shelf": compared among those on it
+        total[among] += _relation_scores(rel, scene, targets[among], facing)
     order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
     return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
 
