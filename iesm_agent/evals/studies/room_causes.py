@@ -25,8 +25,8 @@ from .rooms import scene_rooms
 SETTINGS = {"walled": "Walled", "open": "Open plan"}
 #: the room configurations compared: name -> (title, settings over `RoomConfig()`)
 VARIANTS: dict[str, tuple[str, dict]] = {
-    "before": ("before the wider wall share (wall_share=0.15)", {"wall_share": 0.15}),
-    "ours": ("ours (RoomConfig())", {}),
+    "before": ("`RoomConfig(wall_share=0.15)`, the wall share before issue 29's diagnosis", {"wall_share": 0.15}),
+    "ours": ("`RoomConfig()`", {}),
 }
 
 
@@ -69,7 +69,8 @@ def _scene_causes(scene: dict) -> dict[str, int]:
 
 def render_table(summary: dict) -> str:
     variants = "; ".join(f"{name}: {title}" for name, (title, _) in VARIANTS.items())
-    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']}; LSD + split as {variants}. A cell is "
+    lines = [f"Profile `{summary['realism']}`; seeds {summary['seeds_arg']}; LSD + split under two room "
+             f"configurations ({variants}). A cell is "
              "lost when its per-cell label names its true room type and LSD + split's room label does not (won: the "
              "reverse); evaluated cells as in the rooms study. Causes (`iesm_agent/evals/room_causes.py`, first that "
              "holds): in no room, on a mapped wall, on a drawn line, or in free space no room reached (a pocket); "
