@@ -116,6 +116,16 @@ def test_thick_mapped_walls_are_shared_by_the_rooms_they_separate():
     assert (unshared.room_map[10:30, 80:86] == -1).all()
 
 
+def test_a_wall_mapped_half_a_metre_thick_is_shared_up_to_its_middle():
+    layout = grid_layout(2, 1, wall=0.5, labels=("bedroom", "kitchen"))   # interior wall: columns 80-89
+    left, right = 0, 1
+    for share, unassigned in ((None, 1), (0.15, 7)):   # the default, and the share before it was widened
+        config = RoomConfig() if share is None else RoomConfig(wall_share=share)
+        wall = segment_scene(layout.scene, noisy_labels(layout, 1.0), config).room_map[20:70, 76:94]
+        assert ((wall == -1).sum(axis=1) == unassigned).all()
+        assert ((wall == left).sum(axis=1) == (wall == right).sum(axis=1) - 1).all()  # each takes its side
+
+
 def test_split_parts_with_the_same_label_are_rejoined():
     from iesm_agent.rooms.segment import _merge_alike_parts
 

@@ -58,10 +58,10 @@ def test_the_table_is_written_with_its_command_and_printed(tmp_path, capsys):
 def test_every_study_takes_its_documented_command_line(tmp_path, capsys):
     """Each study's own command line parses the documented options (and its extra ones) and
     refuses tuning seeds before rendering anything."""
-    from iesm_agent.evals.studies import (calibration, captions, label_errors, mapping, mapping_causes, retrieval, rooms,
-                                          storage)
+    from iesm_agent.evals.studies import (calibration, captions, label_errors, mapping, mapping_causes, retrieval,
+                                          room_causes, rooms, storage)
 
-    for study in (calibration, captions, label_errors, mapping, mapping_causes, retrieval, rooms, storage):
+    for study in (calibration, captions, label_errors, mapping, mapping_causes, retrieval, room_causes, rooms, storage):
         argv = ["--seeds", "2", "--realism", "realistic", "--out", str(tmp_path / study.__name__)]
         if study is mapping:
             argv += ["--size", "small"]

@@ -16,8 +16,13 @@ from __future__ import annotations
 
 import statistics
 from pathlib import Path
-from typing import Optional
+from typing import NamedTuple, Optional
 
+import numpy as np
+
+from ...rooms import CellLabels
+from ...sim.ground_truth import GroundTruth
+from ...store.model import SceneMap
 from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, run_checked, scene_frames, scene_rows, study_command,
                study_main, write_table)
 
@@ -26,19 +31,37 @@ METHODS = {"baseline": "per-cell labels (CLIP-like baseline)", "lsd": "LSD compo
 METRICS = ("acc", "macc", "miou", "precision", "recall")
 
 
-def score_scene(frames: Path, built: Path, seed: int) -> dict:
-    """Metrics of the three methods on one built map against its ground truth, on the same cells."""
-    from ...rooms import CellLabels, RoomConfig, segment_scene
-    from ...sim.ground_truth import GroundTruth
+class SceneRooms(NamedTuple):
+    """One built scene ready for room segmentation and scoring: the map, its ground truth, the
+    simulated per-cell labels on the map's grid (`labels`) and on the ground truth's (`baseline`),
+    and the ground-truth cells they cover (`evaluated`, (H, W) bool on the ground truth's grid)."""
+
+    scene: SceneMap
+    gt: GroundTruth
+    labels: CellLabels
+    baseline: CellLabels
+    evaluated: np.ndarray
+
+
+def scene_rooms(frames: Path, built: Path, seed: int) -> SceneRooms:
+    """The map `built` of the simulator frames `frames` with per-cell labels simulated with `seed`."""
     from ...sim.room_labels import ViewpointLabels
     from ...store import load_map
-    from ..rooms import baseline_scores, gt_room_labels, resample, score_room_map
+    from ..rooms import resample
 
     scene, gt = load_map(built), GroundTruth.load(frames)
     labels = ViewpointLabels(frames, seed=seed).cell_labels(scene.grid)
-    gt_labels = gt_room_labels(gt)
     baseline = CellLabels(resample(labels.labels, scene.grid, gt.grid), labels.names)
-    evaluated = baseline.labels >= 0
+    return SceneRooms(scene, gt, labels, baseline, baseline.labels >= 0)
+
+
+def score_scene(frames: Path, built: Path, seed: int) -> dict:
+    """Metrics of the three methods on one built map against its ground truth, on the same cells."""
+    from ...rooms import RoomConfig, segment_scene
+    from ..rooms import baseline_scores, gt_room_labels, resample, score_room_map
+
+    scene, gt, labels, baseline, evaluated = scene_rooms(frames, built, seed)
+    gt_labels = gt_room_labels(gt)
     out = {"baseline": baseline_scores(baseline, gt.rooms, gt_labels, evaluated),
            "room_cells": int((gt.rooms >= 0).sum())}
     for name, split in (("lsd", False), ("split", True)):
