@@ -356,3 +356,26 @@ def test_a_comparison_is_made_among_what_meets_the_contact_relations(tmp_path):
     store = make_store(tmp_path, BOXES)
     assert spatial(store, "the smaller box on the bench")[0] == 2
     assert spatial(store, "the smallest box")[0] == 7
+
+
+def test_which_way_a_thing_is_turned_is_no_place():
+    assert _relations("this armchair is turned to the right. it is green.") == []
+    assert _relations("the stool by the sofa is facing left") == [("near", [("sofa",)], "")]
+    assert _relations("the stool next to the sofa on the right") == [("near", [("sofa",)], ""), ("right", [], "")]
+
+
+# A study with cabinets: two plain cabinets by the door, two filing cabinets further along.
+CABINETS = [
+    box(1, "file cabinet", (0.3, 2.0, 0.5), (0.5, 0.6, 1.0)),
+    box(2, "file cabinet", (0.3, 3.5, 0.5), (0.5, 0.6, 1.0)),
+    box(3, "cabinet", (1.5, 0.3, 0.5), (0.5, 0.4, 1.0)),
+    box(5, "cabinet", (0.3, 0.8, 0.5), (0.5, 0.4, 1.0)),
+    box(4, "door", (2.5, 0.02, 1.0), (0.9, 0.05, 2.0)),
+]
+
+
+def test_a_name_said_in_full_is_not_a_coarser_labels(tmp_path):
+    store = make_store(tmp_path, CABINETS)
+    # the plain cabinet is nearest the door, but the request names the file cabinets in full
+    assert spatial(store, "the file cabinet nearest the door")[0] == 1
+    assert spatial(store, "the cabinet nearest the door")[0] == 3

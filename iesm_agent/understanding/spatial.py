@@ -49,6 +49,8 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
+#: verbs whose side word says which way the target is turned, not where it is ("facing left")
+_TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
 #: parse relations of a word that heads a relation's object ("on the piano [bench]")
@@ -267,6 +269,18 @@ class _Reader:
         objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
         return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
 
+    def turned_to(self, k: int | None) -> bool:
+        """True when the parsed side word `k` is what a verb of turning takes, directly or through
+        "to" or "towards" ("facing left", "turned towards the right"; "facing the desk on the
+        right" keeps its place)."""
+        st = self.structure
+        if k is None:
+            return False
+        head = st.words[k].head
+        if st.words[head].text.lower() in ("to", "towards", "toward") and head != k:
+            head = st.words[head].head
+        return head != k and st.words[head].text.lower() in _TURNED
+
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height: a
         modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
@@ -342,6 +356,8 @@ class _Reader:
         if self.word(i + len(words) - 1).dep == "prt" and not stranded:
             return i + len(words)  # "switch on the lamp": a particle of the verb, not a place (but
             # "pick the one across [from] the sofa": a cue's last word with its object is one)
+        if kind in ("left", "right") and self.turned_to(self.cue_word):
+            return i + len(words)  # "the chair is facing left": which way it is turned, not where
         if words == ("face",) and self.word(i).pos != "VERB":
             return i + 1  # "the clock face": a noun, not "face the window"
         if words == ("at",) and not self.beside(self.words[i]):

@@ -151,6 +151,13 @@ def _named_most_literally(scene: _Scene, rows: np.ndarray, head: frozenset[str],
     return literal if not literal.all() else np.zeros(len(rows), bool)
 
 
+def _not_named_in_part(scene: _Scene, rows: np.ndarray, head: frozenset[str]) -> np.ndarray:
+    """(len(rows),) bool: False for a row whose label is part of another row's label that the
+    request says in full ("file cabinet" asked: not the plain "cabinet"s)."""
+    said_in_full = [scene.label_words[r] for r in rows if scene.label_words[r] <= head]
+    return np.array([not any(scene.label_words[r] < full for full in said_in_full) for r in rows], bool)
+
+
 def _extent(scene: _Scene, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """xy (lo, hi) of the objects in the rooms of `rows` (all objects when rooms are unknown)."""
     rooms = {scene.rooms[r] for r in rows}
@@ -313,6 +320,8 @@ def rank(prompt: Prompt) -> dict:
     if not len(targets):
         return abstain("no candidate of the target kind")
     facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
+    if sq.target and reading.head_words:
+        targets = targets[_not_named_in_part(scene, targets, reading.head_words)]
     total = np.zeros(len(targets))
     if sq.target and reading.head_words:
         total += _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
