@@ -379,3 +379,17 @@ def test_a_name_said_in_full_is_not_a_coarser_labels(tmp_path):
     # the plain cabinet is nearest the door, but the request names the file cabinets in full
     assert spatial(store, "the file cabinet nearest the door")[0] == 1
     assert spatial(store, "the cabinet nearest the door")[0] == 3
+
+
+@pytest.mark.parametrize("text, target, facing", [
+    # the noun after the comma is the target, the viewpoint clause's own noun where one looks from
+    ("Facing the bookcase, the stool on the right.", ("stool",), ("bookshelf",)),
+    ("when you face the fireplace, the armchair on the left", ("armchair",), ("fireplace",)),
+    # no noun of its own after the comma: the viewpoint's kind is the target's
+    ("facing the stools, the one on the left", ("stool",), ()),
+    # a noun a relation takes after the comma is a landmark, not the target
+    ("facing the stools, the one on the left, next to the plant", ("stool",), ()),
+])
+def test_the_noun_after_a_viewpoint_clause_is_the_target(text, target, facing):
+    q = parse_query(text)
+    assert (q.target, q.facing) == (target, facing)

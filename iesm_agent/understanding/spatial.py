@@ -49,6 +49,8 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
+#: parse relations of a noun that another word places or takes, so no target ("next to [the chair]")
+_LANDMARK_DEPS = frozenset({"pobj", "dobj"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
@@ -123,6 +125,8 @@ class _Reader:
         kept = [(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"] or t in ("one",)]
         kept = _side_words(kept, corrected)
         self.toks = toks = [t for t, _ in kept]
+        self.offsets = [at for _, at in kept]
+        self.corrected = corrected
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas, clause_breaks(corrected, kept))
@@ -269,6 +273,23 @@ class _Reader:
         objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
         return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
 
+    def viewpoint_clause_end(self, i: int) -> int | None:
+        """Offset of the comma that closes the viewpoint clause whose cue ends before token `i`
+        ("facing the window[,] ...") when the parse's target lies inside that clause; else None."""
+        at = self.target_at
+        if at is None or at < i:
+            return None
+        comma = self.corrected.find(",", self.offsets[i - 1])
+        return comma if comma >= 0 and self.offsets[at] < comma else None
+
+    def named_after(self, comma: int) -> int | None:
+        """Start of the first free category span after offset `comma` that no preposition or verb
+        takes ("the shelf on the left", not "next to [the chair]"), or None."""
+        st = self.structure
+        return next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
+                     and self.words[j] is not None and st.words[self.noun_of(self.words[j])].dep not in _LANDMARK_DEPS),
+                    None)
+
     def turned_to(self, k: int | None) -> bool:
         """True when the parsed side word `k` is what a verb of turning takes, directly or through
         "to" or "towards" ("facing left", "turned towards the right"; "facing the desk on the
@@ -281,14 +302,19 @@ class _Reader:
             head = st.words[head].head
         return head != k and st.words[head].text.lower() in _TURNED
 
+    def on_a_plan(self, i: int) -> bool:
+        """True when the height word at `i` comes before a side or corner ("the top left corner",
+        "the upper right one"): a place on a plan seen from above, not a height."""
+        after = self.toks[i + 1] if i + 1 < len(self.toks) else ""
+        return _EXTREMES.get(self.toks[i], _HEIGHT_NOUNS.get(self.toks[i])) in ("high", "low") \
+            and (_CUES.get((after,)) in _SIDES or after == "corner")
+
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height: a
         modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
         "of" said of the target ("the cup on top"); not before a side or corner ("the top left
         corner": a place on a plan)."""
-        if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None:
-            return False
-        if i + 1 < len(self.toks) and (_CUES.get((self.toks[i + 1],)) in _SIDES or self.toks[i + 1] == "corner"):
+        if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None or self.on_a_plan(i):
             return False
         st, k = self.structure, self.words[i]
         word = st.words[k]
@@ -329,7 +355,7 @@ class _Reader:
                 i += 1
             elif i in self.cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
                 i = self.cat_at[i].end
-            elif toks[i] in _EXTREMES or self.height_word(i):
+            elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i):
                 out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS[toks[i]]))
                 i += 1
             elif toks[i] in _ORDINALS:
@@ -404,6 +430,14 @@ class _Reader:
         if kind == "from":
             return self.ordinal_from(i, nxt)
         if kind == "facing":
+            comma = self.viewpoint_clause_end(i)
+            if comma is not None:  # the parse took the clause's own noun for the target
+                after = self.named_after(comma)
+                if after is not None:  # "facing the window, the shelf on the left": the window is the viewpoint
+                    out.facing, self.target_at = tuple(self.cat_at[self.target_at].values("cat")), after
+                    self.used.add(after)
+                return i  # else "facing the stools, the one on the left": of the stools' kind
+
             j = self.next_cat(i)
             if j is not None:
                 self.used.add(j)
