@@ -273,7 +273,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
-        return ("request" if question else "description"), named if named is not None else _attribute_of(doc, root)
+        return ("request" if question else "description"), named if named is not None else _object_of(doc, root)
     if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:
         return ("request" if question else "description"), named  # "the thing is a kettle"
     if subject is not None and _noun_of(subject) is not None:
@@ -383,14 +383,6 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
             return child.i
     return None
-
-
-def _attribute_of(doc, root) -> int | None:
-    """The noun a copula names ("there is a green stool", "this is a bar stool")."""
-    for child in root.children:
-        if child.dep_ in ("attr", "nsubj", "dobj") and child.pos_ in NOUNS:
-            return child.i
-    return _object_of(doc, root)
 
 
 def _antecedent(doc, index: int) -> int:
