@@ -57,9 +57,7 @@ def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
         if joiner in words[1:-1]:
             i = words.index(joiner)
             left, right = words[:i], words[i + 1:]
-            if joiner == "of" and left[-1] in lex.words["collective_strict"]:
-                return _phrase_concepts(lex, right)
-            if joiner == "of" and left[-1] in lex.words["weak_heads"]:
+            if joiner == "of" and left[-1] in lex.words["collective_strict"] | lex.words["weak_heads"]:
                 return _phrase_concepts(lex, right)
             main = _phrase_concepts(lex, left)
             for c, w in _phrase_concepts(lex, right).items():
