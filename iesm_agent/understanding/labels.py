@@ -86,16 +86,13 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
     return out
 
 
-def _text_attrs(lex: Lexicon, text: str) -> tuple[set[tuple[str, str]], set[str]]:
-    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
-    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
-    return attrs, set(lemmas)
-
-
 @lru_cache(maxsize=65536)
 def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[str]]:
-    attrs, words = _text_attrs(load_lexicon(), text)
-    return frozenset(attrs), frozenset(words)
+    """(attributes, lemmas) of a label, caption or tag value."""
+    lex = load_lexicon()
+    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
+    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
+    return frozenset(attrs), frozenset(lemmas)
 
 
 _CHUNK = re.compile(r"[,;:.()/|!?]+")
