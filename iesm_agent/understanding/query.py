@@ -165,11 +165,7 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     following = {s.start: s for s in spans if s.has("cat")}
     while head.end in following and _adjacent(surface, head.end):
         head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
-    start = min(phrase_start, head.start)
-    described = {s.end: s for s in spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)}
-    while start in described and _adjacent(surface, start):
-        start = described[start].start  # adjectives right before the phrase are its own, whatever the parse
-    return _Target(start, head.end, head, structure.target)
+    return _Target(min(phrase_start, head.start), head.end, head, structure.target)
 
 
 def _surface_index(surface: list[str], word: Word) -> int | None:
