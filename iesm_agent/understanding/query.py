@@ -160,8 +160,6 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
         return _Target(min(phrase_start, head.start), head.end, None, structure.target)
     if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
-    if any(s.has("cue") and s.end - s.start > 1 and s.start <= index < s.end for s in spans):
-        return None  # the object of a use ("where can I take a bath")
     following = {s.start: s for s in spans if s.has("cat")}
     while head.end in following and _adjacent(surface, head.end):
         head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
