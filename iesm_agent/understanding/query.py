@@ -55,8 +55,6 @@ class QueryInfo:
             value = getattr(self, f.name)
             if isinstance(value, dict):
                 object.__setattr__(self, f.name, MappingProxyType(dict(value)))
-            elif isinstance(value, list):
-                object.__setattr__(self, f.name, tuple(value))
 
     @property
     def named(self) -> bool:
