@@ -182,9 +182,7 @@ def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: 
     category before that."""
     bounds = lex.words["boundaries"]
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
-    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
-    if lemmas and lemmas[0] in bounds:
-        end = 0
+    end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
     if clause:
         end = min(end, min(clause))
     return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
