@@ -50,8 +50,6 @@ def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
 def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
     words = [lex.lemma(t) for t in lex.tokens(part) if t not in lex.words["skip"]]
     words = [w for w in words if w not in lex.words["ignore"]]
-    if not words:
-        return {}
     # "set of towels" -> towels; "box of paper" -> box (+ paper); "bowl with sweets" -> bowl
     for joiner in ("of", "with", "for", "on", "in", "and"):
         if joiner in words[1:-1]:
@@ -107,8 +105,6 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     stems: set[str] = set()
     for chunk in _CHUNK.split(text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
-        if not lemmas:
-            continue
         stems.update(word_stems(lex, lemmas))
         spans: list[Span] = []
         for sp in lex.scan(lemmas):
