@@ -63,15 +63,16 @@ class QueryInfo:
 
 
 
+def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
+    """Length of the request phrase ("go to", "take me to") at `tokens[i]` with words after it; 0: none."""
+    return next((len(cmd) for cmd in lex.commands
+                 if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd)), 0)
+
+
 def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
-    changed = True
-    while changed and tokens:
-        changed = False
-        for cmd in lex.commands:
-            if tuple(tokens[:len(cmd)]) == cmd and len(tokens) > len(cmd):
-                tokens = tokens[len(cmd):]
-                changed = True
-                break
+    """`tokens` without the request phrases they open with ("please take me to")."""
+    while n := _command_at(lex, tokens, 0):
+        tokens = tokens[n:]
     return tokens
 
 
@@ -101,9 +102,8 @@ def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[st
     for i in range(2, len(tokens) - 1):
         if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
             continue  # "to get it dried" is a purpose, not the request
-        for cmd in lex.commands:
-            if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd):
-                return tokens[i:], tokens[:i]
+        if _command_at(lex, tokens, i):
+            return tokens[i:], tokens[:i]
     return tokens, []
 
 
