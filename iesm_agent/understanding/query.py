@@ -346,9 +346,8 @@ def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     that is a cue names a class of things (a perch to sit on)."""
     structure = reading.structure
     word = _parse_word(structure, reading.surface, index)
-    head = target.word if target.word is not None else structure.target
-    return (word is not None and head is not None and word != head and structure.words[word].pos in NOUNS
-            and structure.dominates(head, word))
+    return (word is not None and target.word is not None and word != target.word
+            and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
 
 
 def _leaves_a_room(reading: _Reading) -> bool:
