@@ -62,7 +62,6 @@ class QueryInfo:
         return any(w >= 1.0 for w in self.targets.values())
 
 
-
 def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
     """Length of the request phrase ("go to", "take me to") at `tokens[i]` with words after it; 0: none."""
     return next((len(cmd) for cmd in lex.commands

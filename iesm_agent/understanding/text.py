@@ -122,8 +122,6 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
     return slots, used
 
 
-
-
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
 
 
