@@ -272,13 +272,11 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
                   and t.head != subject), None)
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
-    if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
-        return ("request" if question else "description"), named if named is not None else _object_of(doc, root)
     if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:
         return ("request" if question else "description"), named  # "the thing is a kettle"
     if subject is not None and _noun_of(subject) is not None:
         return ("request" if question else "description"), _noun_of(subject)
-    found = _object_of(doc, root)
+    found = named if named is not None else _object_of(doc, root)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in NOUNS), None)
