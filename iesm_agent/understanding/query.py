@@ -142,7 +142,7 @@ class _Target:
     word: int | None = None   # the parse's word index of the head noun
 
 
-def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) -> _Target | None:
+def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span]) -> _Target | None:
     """The target phrase the parse names, when its head noun is a category the lexicon knows
     (not a room); None otherwise (the caller reads the phrase from the word order)."""
     if structure.target is None:
@@ -151,7 +151,7 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     if index is None:
         return None
     first = structure.words[structure.phrase[0]].start
-    phrase_start = next((i for i, t in enumerate(surface) if getattr(t, "at", -1) >= first), index)
+    phrase_start = next((i for i, t in enumerate(surface) if t.at >= first), index)
     head = next((s for s in spans if s.start <= index < s.end), None)
     if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
         return _Target(min(phrase_start, head.start), head.end, None, structure.target)
@@ -163,15 +163,14 @@ def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) 
     return _Target(min(phrase_start, head.start), head.end, head, structure.target)
 
 
-def _surface_index(surface: list[str], word: Word) -> int | None:
+def _surface_index(surface: list[_Token], word: Word) -> int | None:
     """Index of the surface token that the parsed `word` covers, or None (dropped or absent)."""
-    return next((i for i, t in enumerate(surface) if word.start <= getattr(t, "at", -1) < word.start + len(word.text)),
-                None)
+    return next((i for i, t in enumerate(surface) if word.start <= t.at < word.start + len(word.text)), None)
 
 
-def _adjacent(surface: list[str], i: int) -> bool:
+def _adjacent(surface: list[_Token], i: int) -> bool:
     """True when surface token `i` follows token `i - 1` with one space between, as written."""
-    return getattr(surface[i], "at", -1) == getattr(surface[i - 1], "at", -2) + len(surface[i - 1]) + 1
+    return surface[i].at == surface[i - 1].at + len(surface[i - 1]) + 1
 
 
 def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
@@ -187,19 +186,18 @@ def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: 
     return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
 
 
-def _outside_target(structure: Structure, surface: list[str], span: Span, target: _Target,
+def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
                     described: frozenset[int], place_ok: bool = False) -> bool:
     """True when the words of `span` modify a noun other than the target ("beside the tall
     wardrobe", "the office papers", "hang my wet coat"); a part of the target ("the mug with the
     blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
     white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
-    at = getattr(surface[span.end - 1], "at", None)
     word = _parse_word(structure, surface, span.end - 1)
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
             and structure.words[word].pos == "NOUN":
         return True  # a thing the request mentions, not a description ("you nuke popcorn in")
-    noun = None if at is None else structure.modified_noun(at)
+    noun = structure.modified_noun(surface[span.end - 1].at)
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
@@ -213,10 +211,9 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
 
 
-def _parse_word(structure: Structure, surface: list[str], index: int) -> int | None:
+def _parse_word(structure: Structure, surface: list[_Token], index: int) -> int | None:
     """The parse's word that covers surface token `index` (None: a token outside the parse)."""
-    at = getattr(surface[index], "at", None)
-    return None if at is None else structure.index_at(at)
+    return structure.index_at(surface[index].at)
 
 
 @dataclass
@@ -227,7 +224,7 @@ class _Reading:
 
     text: str
     structure: Structure
-    surface: list[str]
+    surface: list[_Token]
     lemmas: list[str]
     spans: list[Span]
     preamble: list[str]
@@ -249,14 +246,14 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
         tokens = tokens[:marker[0]]
     request, preamble = _split_preamble(lex, tokens)
-    if structure.target is None or structure.words[structure.target].start >= getattr(request[0], "at", 0):
+    if structure.target is None or structure.words[structure.target].start >= request[0].at:
         tokens = request  # what comes before the request phrase only says why
     else:
         preamble = []  # the parse's target comes first ("A round rug by the door. Head there.")
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
-    breaks = clause_breaks(corrected, [(t, getattr(t, "at", None)) for t in surface])
+    breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
     return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
 
 
@@ -364,7 +361,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
     afford: dict[str, float] = {}
     landmark_words: set[str] = set()
     attr_spans: list[Span] = []
-    described = frozenset(getattr(surface[i], "at", -1) for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
+    described = frozenset(surface[i].at for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
                           for i in range(s.start, s.end))
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
@@ -460,7 +457,7 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
 _PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
-def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: frozenset[str],
+def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop: frozenset[str],
                  start: int, end: int, *, whole: bool) -> str | None:
     """The content words of `start:end` that no lexicon phrase covers, as written; None when
     there are none, or (`whole`) when any word of the span is a lexicon phrase."""
@@ -471,7 +468,7 @@ def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: f
     return " ".join(words) or None
 
 
-def _landmark_clauses(surface: list[str], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
+def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
     """Token positions of relative clauses about a landmark whose preposition is stranded: from
     the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
     out: set[int] = set()
