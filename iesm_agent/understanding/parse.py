@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 import sys
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from ..errors import IesmError
@@ -152,11 +152,7 @@ def parse_request(text: str) -> Structure:
     fronted = _FRONTED_EXCLUSION.match(text)
     if fronted is None or not any(c.isalpha() for c in text[fronted.end():]):
         return _parse_sentences(text)
-    at = fronted.end()
-    rest = _parse_sentences(text[at:])
-    return Structure(tuple(Word(w.text, w.start + at, w.head, w.dep, w.pos) for w in rest.words), rest.target,
-                     rest.phrase, (rest.request[0] + at, rest.request[1] + at),
-                     tuple((a + at, b + at) for a, b in rest.context), rest.leaving, (0, at))
+    return replace(_parse_sentences(text, fronted.end()), excluded=(0, fronted.end()))
 
 
 def parse_many(texts: list[str]) -> None:
@@ -172,10 +168,10 @@ def parse_many(texts: list[str]) -> None:
         _batch.clear()
 
 
-def _parse_sentences(text: str) -> Structure:
-    """The structure of `text` as parsed, every sentence of it."""
-    doc = _batch.get(text) or _pipeline()(text)  # (an empty doc is parsed again: the same)
-    words = tuple(Word(t.text, t.idx, t.head.i, t.dep_, t.pos_) for t in doc)
+def _parse_sentences(text: str, at: int = 0) -> Structure:
+    """The structure of `text[at:]` as parsed, every sentence of it, at `text`'s character offsets."""
+    doc = _batch.get(text[at:]) or _pipeline()(text[at:])  # (an empty doc is parsed again: the same)
+    words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
     readings = [_sentence_target(doc, s) for s in sentences]
     if any(target is not None and not _stand_in(doc, target) for _, target in readings):
@@ -183,7 +179,7 @@ def _parse_sentences(text: str) -> Structure:
                     for kind, target in readings]  # "Take me to it.": about the one named before
     chosen = _choose_sentence(readings)
     if chosen is None:
-        return Structure(words, None, None, (0, len(text)), ())
+        return Structure(words, None, None, (at, len(text)), ())
     target = readings[chosen][1]
     request_end = chosen + 1
     if target is not None and doc[target].lower_ in STAND_INS:
@@ -193,18 +189,19 @@ def _parse_sentences(text: str) -> Structure:
     while request_end < len(sentences) and (readings[request_end][0] in ("continuation", "empty") or (
             readings[request_end][1] is not None and doc[readings[request_end][1]].lemma_ == lemma)):
         request_end += 1  # "It is white.", "The dresser is a dark box.": more about the same target
-    request = (sentences[chosen].start_char, sentences[request_end - 1].end_char)
-    context = tuple((s.start_char, s.end_char) for i, s in enumerate(sentences)
+    request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
+    context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    return Structure(words, target, phrase, request, context, _left_place(doc, request))
+    return Structure(words, target, phrase, request, context, _left_place(doc, request, at))
 
 
-def _left_place(doc, request: tuple[int, int]) -> int | None:
-    """The noun the request wants out of: the object of "leave"/"exit", or the noun after "out
-    of" ("take me out of the bathroom"); None when it wants out of nothing."""
+def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
+    """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
+    "leave"/"exit", or the noun after "out of" ("take me out of the bathroom"); None when it wants
+    out of nothing."""
     for t in doc:
-        if not request[0] <= t.idx < request[1] or t.pos_ not in NOUNS:
+        if not request[0] <= t.idx + at < request[1] or t.pos_ not in NOUNS:
             continue
         if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
             return t.i
