@@ -37,10 +37,7 @@ def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
     """Categories a raw map label denotes, with weights: 'cabinet kitchen' -> cabinet,
     'stand/small table' -> stand and side table, 'set of towels' -> towel, 'mirror frame' -> mirror 1.0 + frame."""
     lex = load_lexicon()
-    out: dict[str, float] = {}
-    whole = [v for k, v in lex.phrase(label) if k == "cat"]
-    for c in whole:
-        out[c] = 1.0
+    out = {v: 1.0 for k, v in lex.phrase(label) if k == "cat"}  # the whole label as one phrase
     for part in label.replace("\\", "/").split("/"):
         for concept, w in _part_concepts(lex, part).items():
             out[concept] = max(out.get(concept, 0.0), w)
