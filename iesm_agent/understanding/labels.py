@@ -145,16 +145,16 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
 
 def _record(data: dict) -> Record:
     label = _as_text(data.get("label"))
-    concepts = dict(label_concepts(label)) if label else {}
-    label_words = set(_caption_profile(label)[1]) if label else set()
+    concepts = dict(label_concepts(label))
+    label_words = _caption_profile(label)[1]
     alts = data.get("alt_labels")
     # alternative labels are the mapper's runner-up guesses: weak evidence, best first
     for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
         for c, w in label_concepts(_as_text(alt)):
             concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
-    room = room_of(_as_text(data.get("room"))) if data.get("room") else None
+    room = room_of(_as_text(data.get("room")))
     lex = load_lexicon()
-    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha()) if room else frozenset()
+    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha())
     caption = _as_text(data.get("caption"))
     text_parts = [label, caption]
     tags = data.get("tags")
@@ -165,15 +165,14 @@ def _record(data: dict) -> Record:
     slots: dict[Slot, None] = {}
     stems: set[str] = set()
     for part in text_parts:
-        if part:
-            a, w = _caption_profile(part)
-            attrs |= a
-            words |= w
-            sl, st = text_slots(part)
-            slots.update(dict.fromkeys(sl))
-            stems |= st
+        a, w = _caption_profile(part)
+        attrs |= a
+        words |= w
+        sl, st = text_slots(part)
+        slots.update(dict.fromkeys(sl))
+        stems |= st
     return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
-                  attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
+                  attrs=frozenset(attrs), words=frozenset(words), label_words=label_words,
                   text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems),
                   room_words=room_words)
 
