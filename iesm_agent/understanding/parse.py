@@ -231,8 +231,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     noun phrase), "description" (a statement about an object: "this is a chair", "the chair is
     by the desk"), "personal" (about the speaker), "continuation" (its subject stands for an
     earlier target: "it is by the desk"), "empty" (no content word)."""
-    content = [t for t in sent if t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM")]
-    if not content:
+    if not any(t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM") for t in sent):
         return "empty", None
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
