@@ -266,9 +266,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
                   and t.head != subject), None)
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
-    if subject is not None and subject.lower_ in TARGET_PRONOUNS and named is not None:
-        return ("request" if question else "description"), named  # "the thing is a kettle"
-    if subject is not None and _noun_of(subject) is not None:
+    placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
+    if subject is not None and _noun_of(subject) is not None and not (placeholder and named is not None):
         return ("request" if question else "description"), _noun_of(subject)
     found = named if named is not None else _object_of(doc, root)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
