@@ -86,12 +86,9 @@ class Structure:
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
 
-    def modified_noun(self, offset: int) -> int | None:
-        """Index of the noun that the word at character `offset` modifies (as an adjective,
-        compound or possessor), or None when it modifies no noun (a predicate: "it is white")."""
-        k = self.index_at(offset)
-        if k is None:
-            return None
+    def modified_noun(self, k: int) -> int | None:
+        """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
+        None when it modifies no noun (a predicate: "it is white")."""
         word = self.words[k]
         while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
             k = word.head

@@ -197,7 +197,7 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
             and structure.words[word].pos == "NOUN":
         return True  # a thing the request mentions, not a description ("you nuke popcorn in")
-    noun = structure.modified_noun(surface[span.end - 1].at)
+    noun = None if word is None else structure.modified_noun(word)
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
