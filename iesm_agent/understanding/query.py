@@ -173,17 +173,22 @@ def _adjacent(surface: list[_Token], i: int) -> bool:
     return surface[i].at == surface[i - 1].at + len(surface[i - 1]) + 1
 
 
-def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
+def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
     about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
-    category before that."""
+    category before that, its `word` the parse's word for that head (with no head, the parse's
+    target all the same: "the thing", "something")."""
     bounds = lex.words["boundaries"]
+    lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
     if clause:
         end = min(end, min(clause))
-    return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
+    head = _head_span(spans, end, lemmas, lex.words["abstract"])
+    if head is None:
+        return _Target(0, end, None, reading.structure.target)
+    return _Target(0, end, head, _parse_word(reading.structure, reading.surface, head.end - 1))
 
 
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
@@ -257,19 +262,6 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
 
 
-def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
-    """The target phrase: from the parse when it names a known kind, else from the word order;
-    its `word` is the parse's word for the head noun either way."""
-    parsed = _parsed_target(reading.structure, reading.surface, reading.spans)
-    if parsed is not None:
-        return parsed
-    target = _ordered_target(lex, reading.lemmas, reading.spans, clause)
-    word = reading.structure.target  # "the thing", "something": the parse's word all the same
-    if target.head is not None:
-        word = _parse_word(reading.structure, reading.surface, target.head.end - 1)
-    return _Target(target.start, target.end, target.head, word)
-
-
 def parse_queries(texts: list[str]) -> None:
     """Parse the requests `texts` together (`parse_many`), for `analyse_query` to find memoised."""
     lex = load_lexicon()
@@ -288,7 +280,9 @@ def analyse_query(text: str) -> QueryInfo:
         info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
-    target = _locate_target(lex, reading, clause)
+    # the target phrase: from the parse when it names a known kind, else from the word order
+    target = (_parsed_target(reading.structure, reading.surface, reading.spans)
+              or _ordered_target(lex, reading, clause))
     info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
     afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
