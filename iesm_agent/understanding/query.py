@@ -188,7 +188,7 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
     head = _head_span(spans, end, lemmas, lex.words["abstract"])
     if head is None:
         return _Target(0, end, None, reading.structure.target)
-    return _Target(0, end, head, _parse_word(reading.structure, reading.surface, head.end - 1))
+    return _Target(0, end, head, reading.structure.index_at(reading.surface[head.end - 1].at))
 
 
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
@@ -198,7 +198,7 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
     white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
-    word = _parse_word(structure, surface, span.end - 1)
+    word = structure.index_at(surface[span.end - 1].at)  # the parse's word under the span's last token
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
             and structure.words[word].pos == "NOUN":
         return True  # a thing the request mentions, not a description ("you nuke popcorn in")
@@ -214,11 +214,6 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
         return False
     return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
-
-
-def _parse_word(structure: Structure, surface: list[_Token], index: int) -> int | None:
-    """The parse's word that covers surface token `index` (None: a token outside the parse)."""
-    return structure.index_at(surface[index].at)
 
 
 @dataclass
@@ -335,7 +330,7 @@ def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     cover"), so a use it hints at describes the thing rather than says what to do; a head noun
     that is a cue names a class of things (a perch to sit on)."""
     structure = reading.structure
-    word = _parse_word(structure, reading.surface, index)
+    word = structure.index_at(reading.surface[index].at)
     return (word is not None and target.word is not None and word != target.word
             and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
 
