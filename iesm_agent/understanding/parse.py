@@ -219,8 +219,7 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
         found = [i for i, (kind, target) in enumerate(readings) if kind in kinds and target is not None]
         if found:
             return found[pick]
-    found = [i for i, (kind, _) in enumerate(readings) if kind != "empty"]
-    return found[0] if found else None
+    return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
 
 
 def _sentence_target(doc, sent) -> tuple[str, int | None]:
