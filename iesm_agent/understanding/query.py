@@ -145,11 +145,9 @@ class _Target:
 def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span]) -> _Target | None:
     """The target phrase the parse names, when its head noun is a category the lexicon knows
     (not a room); None otherwise (the caller reads the phrase from the word order)."""
-    if structure.target is None:
-        return None
-    index = _surface_index(surface, structure.words[structure.target])
+    index = None if structure.target is None else _surface_index(surface, structure.words[structure.target])
     if index is None:
-        return None
+        return None  # no target, or its word is not among the request's tokens
     first = structure.words[structure.phrase[0]].start
     phrase_start = next((i for i, t in enumerate(surface) if t.at >= first), index)
     head = next((s for s in spans if s.start <= index < s.end), None)
