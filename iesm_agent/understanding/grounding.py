@@ -42,16 +42,14 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
         label = _misspelt_label(info.unknown_target, labels)
         if label is not None:  # its words count as the query's, whatever the lexicon makes of them
             overlap = overlap | {stem(w) for w in load_lexicon().tokens(label) if len(w) > 2}
-        elif encoder is not None:
-            label, _ = _nearest(encoder, info.unknown_target, labels)
+        else:
+            label = _nearest(encoder, info.unknown_target, labels)
         if label is not None:
             concepts = label_concepts(label)
             top = concepts[0][1] if concepts else 0.0
             targets.update({c: 1.0 for c, w in concepts if w >= top})
     if info.unknown_room:
-        room = _misspelt_label(info.unknown_room, rooms)
-        if room is None and encoder is not None:
-            room, _ = _nearest(encoder, info.unknown_room, rooms)
+        room = _misspelt_label(info.unknown_room, rooms) or _nearest(encoder, info.unknown_room, rooms)
         if room is not None:
             found_rooms[room] = 1.0
     grounded = info
@@ -79,17 +77,17 @@ def _misspelt_label(phrase: str, options: Sequence[str]) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
-def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> tuple[str | None, float]:
-    """The option nearest to `phrase` and its cosine; None for the option when the best is
-    below MIN_SIMILARITY or within MIN_MARGIN of the runner-up."""
-    if not options:
-        return None, 0.0
+def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> str | None:
+    """The option nearest to `phrase` by cosine; None without an encoder or options, or when the
+    best is below MIN_SIMILARITY or within MIN_MARGIN of the runner-up."""
+    if encoder is None or not options:
+        return None
     sims = _encode(encoder, options) @ _encode(encoder, [phrase])[0]
     order = np.argsort(-sims)
     best = float(sims[order[0]])
     runner_up = float(sims[order[1]]) if len(order) > 1 else -1.0
     clear = best >= MIN_SIMILARITY and best - runner_up >= MIN_MARGIN
-    return (options[int(order[0])] if clear else None), best
+    return options[int(order[0])] if clear else None
 
 
 def _encode(encoder: Any, texts: Sequence[str]) -> np.ndarray:

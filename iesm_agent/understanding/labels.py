@@ -37,10 +37,7 @@ def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
     """Categories a raw map label denotes, with weights: 'cabinet kitchen' -> cabinet,
     'stand/small table' -> stand and side table, 'set of towels' -> towel, 'mirror frame' -> mirror 1.0 + frame."""
     lex = load_lexicon()
-    out: dict[str, float] = {}
-    whole = [v for k, v in lex.phrase(label) if k == "cat"]
-    for c in whole:
-        out[c] = 1.0
+    out = {v: 1.0 for k, v in lex.phrase(label) if k == "cat"}  # the whole label as one phrase
     for part in label.replace("\\", "/").split("/"):
         for concept, w in _part_concepts(lex, part).items():
             out[concept] = max(out.get(concept, 0.0), w)
@@ -50,16 +47,12 @@ def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
 def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
     words = [lex.lemma(t) for t in lex.tokens(part) if t not in lex.words["skip"]]
     words = [w for w in words if w not in lex.words["ignore"]]
-    if not words:
-        return {}
     # "set of towels" -> towels; "box of paper" -> box (+ paper); "bowl with sweets" -> bowl
     for joiner in ("of", "with", "for", "on", "in", "and"):
         if joiner in words[1:-1]:
             i = words.index(joiner)
             left, right = words[:i], words[i + 1:]
-            if joiner == "of" and left[-1] in lex.words["collective_strict"]:
-                return _phrase_concepts(lex, right)
-            if joiner == "of" and left[-1] in lex.words["weak_heads"]:
+            if joiner == "of" and left[-1] in lex.words["collective_strict"] | lex.words["weak_heads"]:
                 return _phrase_concepts(lex, right)
             main = _phrase_concepts(lex, left)
             for c, w in _phrase_concepts(lex, right).items():
@@ -88,16 +81,13 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
     return out
 
 
-def _text_attrs(lex: Lexicon, text: str) -> tuple[set[tuple[str, str]], set[str]]:
-    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
-    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
-    return attrs, set(lemmas)
-
-
 @lru_cache(maxsize=65536)
 def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[str]]:
-    attrs, words = _text_attrs(load_lexicon(), text)
-    return frozenset(attrs), frozenset(words)
+    """(attributes, lemmas) of a label, caption or tag value."""
+    lex = load_lexicon()
+    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
+    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
+    return frozenset(attrs), frozenset(lemmas)
 
 
 _CHUNK = re.compile(r"[,;:.()/|!?]+")
@@ -112,8 +102,6 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     stems: set[str] = set()
     for chunk in _CHUNK.split(text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
-        if not lemmas:
-            continue
         stems.update(word_stems(lex, lemmas))
         spans: list[Span] = []
         for sp in lex.scan(lemmas):
@@ -157,16 +145,16 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
 
 def _record(data: dict) -> Record:
     label = _as_text(data.get("label"))
-    concepts = dict(label_concepts(label)) if label else {}
-    label_words = set(_caption_profile(label)[1]) if label else set()
+    concepts = dict(label_concepts(label))
+    label_words = _caption_profile(label)[1]
     alts = data.get("alt_labels")
     # alternative labels are the mapper's runner-up guesses: weak evidence, best first
     for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
         for c, w in label_concepts(_as_text(alt)):
             concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
-    room = room_of(_as_text(data.get("room"))) if data.get("room") else None
+    room = room_of(_as_text(data.get("room")))
     lex = load_lexicon()
-    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha()) if room else frozenset()
+    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha())
     caption = _as_text(data.get("caption"))
     text_parts = [label, caption]
     tags = data.get("tags")
@@ -177,15 +165,14 @@ def _record(data: dict) -> Record:
     slots: dict[Slot, None] = {}
     stems: set[str] = set()
     for part in text_parts:
-        if part:
-            a, w = _caption_profile(part)
-            attrs |= a
-            words |= w
-            sl, st = text_slots(part)
-            slots.update(dict.fromkeys(sl))
-            stems |= st
+        a, w = _caption_profile(part)
+        attrs |= a
+        words |= w
+        sl, st = text_slots(part)
+        slots.update(dict.fromkeys(sl))
+        stems |= st
     return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
-                  attrs=frozenset(attrs), words=frozenset(words), label_words=frozenset(label_words),
+                  attrs=frozenset(attrs), words=frozenset(words), label_words=label_words,
                   text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems),
                   room_words=room_words)
 

