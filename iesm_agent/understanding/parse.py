@@ -88,7 +88,7 @@ class Structure:
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
-        None when it modifies no noun (a predicate: "it is white")."""
+        None when it modifies no noun (a predicate: "the rug looks red")."""
         word = self.words[k]
         while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
             k = word.head

@@ -69,7 +69,7 @@ def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
 
 
 def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
-    """`tokens` without the request phrases they open with ("please take me to")."""
+    """`tokens` without the request phrases they open with ("do show me the way to")."""
     while n := _command_at(lex, tokens, 0):
         tokens = tokens[n:]
     return tokens

@@ -326,7 +326,7 @@ class _Reader:
                 or any(st.words[c].text.lower() == "of" for c in st.children(k, "prep")):
             return False
         owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
-        if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a book lying on top")
+        if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
             subject = next(iter(st.children(owner, "nsubj")), None)
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
         return owner is not None and (self.span_at(owner) == self.target_at or self.points_back(owner))
@@ -437,7 +437,6 @@ class _Reader:
                     out.facing, self.target_at = tuple(self.cat_at[self.target_at].values("cat")), after
                     self.used.add(after)
                 return i  # else "facing the stools, the one on the left": of the stools' kind
-
             j = self.next_cat(i)
             if j is not None:
                 self.used.add(j)

@@ -210,8 +210,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
-    if not marks and kind in ("on", "under", "above", "below", "with", "near", "closest", "farthest", "between",
-                              "opposite"):
+    if not marks and (kind in _CONTACT or kind in ("near", "closest", "farthest", "between", "opposite")):
         return None  # the query's landmark could not be read: no guess
     if kind in _CONTACT:
         lm = marks[0]
@@ -322,14 +321,14 @@ def rank(prompt: Prompt) -> dict:
     facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
     if sq.target and reading.head_words:
         targets = targets[_not_named_in_part(scene, targets, reading.head_words)]
-    total = np.zeros(len(targets))
-    if sq.target and reading.head_words:
-        total += _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
+        total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
+    else:
+        total = np.zeros(len(targets))
     placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
     comparisons = [rel for rel in sq.relations if rel.kind == "extreme" and not rel.negated]
     for rel in sq.relations:
-        if rel in comparisons:
-            continue
+        if rel.kind == "extreme" and not rel.negated:
+            continue  # ranked below, among the placed targets
         scores = _relation_scores(rel, scene, targets, facing)
         if scores is None:
             return abstain("a landmark the map lacks")  # no guess
@@ -337,7 +336,7 @@ def rank(prompt: Prompt) -> dict:
         if rel.kind in _CONTACT and not rel.negated:
             placed &= scores >= _MET
     among = placed if placed.any() else np.ones(len(targets), bool)
-    for rel in comparisons:  # "the upper of the books on the shelf": compared among those on it
+    for rel in comparisons:  # "the smaller of the boxes on the bench": compared among those on it
         total[among] += _relation_scores(rel, scene, targets[among], facing)
     order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
     return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
