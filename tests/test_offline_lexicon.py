@@ -54,7 +54,7 @@ def test_query_analysis_separates_target_room_attributes_and_function():
     q = analyse_query("a place to hang my coat")
     assert not q.named and q.afford["wardrobe"] == 1.0 and q.targets.get("clothes", 0) < 1.0
     q = analyse_query("the glass table near the window")
-    assert q.targets["table"] == 1.0 and q.targets["window"] < 1.0 and ("material", "glass") in q.attrs
+    assert q.targets == {"table": 1.0} and q.landmarks == {"window": 0.35} and ("material", "glass") in q.attrs
     q = analyse_query("the kitchen cabinet")
     assert q.rooms == {"kitchen": 0.5} and q.room_phrase is None
 

@@ -26,6 +26,12 @@ def _target(text: str) -> str | None:
     ("show me where the candles are", "candles"),
     ("Looking at the bookcases, pick the one on the right.", "bookcases"),    # "one" stands for a plural named before
     ("Grab one of the cushions from the couch", "cushions"),
+    ("Could you find any of the footstools in the den?", "footstools"),        # a partitive pronoun: its noun
+    ("walk me over to two of the ottomans", "ottomans"),
+    ("each of the candles on the mantel", "candles"),
+    ("Any ottoman is fine, just lead me to one.", "ottoman"),                  # a bare "one": the noun named before
+    ("Is there a footstool near the piano? Take me to one.", "footstool"),     # not the landmark
+    ("garbage can beside the oven", "garbage"),                                 # "can" tagged as the root verb
     ("Which vase holds the tulips? Take me to it.", "vase"),                  # "it" points back
     ("ottoman nearest fireplace", "ottoman"),                                        # telegraphic: the superlative's noun
     ("please walk to the kettle closest to the toaster", "kettle"),          # "kettle closest" tagged as one word
@@ -60,10 +66,25 @@ def test_a_continuation_sentence_joins_the_request_and_a_reason_sentence_is_cont
 
 def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sentence():
     info = analyse_query("this is a leather sofa. it is facing a glass coffee table.")
-    assert info.targets["sofa"] == 1.0 and info.targets["coffee table"] < 1.0
+    assert info.targets["sofa"] == 1.0 and "coffee table" not in info.targets and "coffee table" in info.landmarks
     info = analyse_query("there is a white wardrobe. it is next to the bed.")
-    assert info.targets["wardrobe"] == 1.0 and info.targets["bed"] < 1.0
+    assert info.targets["wardrobe"] == 1.0 and "bed" not in info.targets and "bed" in info.landmarks
     assert ("color", "white") in info.attrs
+
+
+def test_what_a_verb_of_making_brings_into_being_is_no_place_to_go():
+    info = analyse_query("I'd love to brew a pot of cocoa")
+    assert not info.named and info.targets.get("pot", 0.0) < 1.0
+    assert analyse_query("I need to make the bed").targets == {"bed": 1.0}  # a bed already there
+
+
+def test_a_landmark_is_no_target_when_the_request_asks_for_a_kind_of_its_own():
+    info = analyse_query("the wastebasket next to the radiator")
+    assert info.targets == {"trash can": 1.0} and info.landmarks == {"radiator": 0.35}
+    info = analyse_query("a seat near the piano")  # a class noun asks for a kind too
+    assert not info.targets and info.landmarks == {"piano": 0.35}
+    info = analyse_query("the thing next to the radiator")  # no kind asked: the landmark may be meant
+    assert info.targets == {"radiator": 0.35}
 
 
 def test_predicates_of_the_target_are_its_attributes_landmark_adjectives_are_not():

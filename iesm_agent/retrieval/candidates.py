@@ -45,10 +45,11 @@ def _denoted(label: str, alt_labels: tuple[str, ...]) -> tuple[tuple[str, float]
     return tuple(out)
 
 
-def _wanted(info: QueryInfo) -> dict[str, float]:
-    """Categories the query names (weight 1) or implies by function (affordance weight)."""
+def _wanted(info: QueryInfo, landmarks: bool = False) -> dict[str, float]:
+    """Categories the query names (weight 1) or implies by function (affordance weight); with
+    `landmarks`, also those it names beside the target (their weight, 0.35)."""
     wanted = dict(info.afford)
-    for concept, weight in info.targets.items():
+    for concept, weight in [*info.targets.items(), *(info.landmarks.items() if landmarks else ())]:
         wanted[concept] = max(wanted.get(concept, 0.0), weight)
     return wanted
 
@@ -103,7 +104,7 @@ def reference_ids(store: Any, info: QueryInfo, exclude: tuple[int, ...], limit: 
     index = _INDEXES.get(store)
     if index is None:
         index = _INDEXES[store] = _LabelIndex(instances)
-    wanted = _wanted(info)
+    wanted = _wanted(info, landmarks=True)
     if not wanted:
         return ()
     fit = np.array([_fit(wanted, _denoted(*key)) for key in index.keys])[index.group]

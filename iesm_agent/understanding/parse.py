@@ -29,6 +29,9 @@ _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
 _VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
 _ACTIVITY_VERBS = frozenset({"take", "have"})
+#: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
+#: "make the bed"): what they make is no place to go
+_MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
 #: clause relations under which a verb's object can be the request's target
@@ -177,8 +180,8 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         return Structure(words, None, None, (at, len(text)), ())
     target = readings[chosen][1]
     request_end = chosen + 1
-    if target is not None and doc[target].lower_ in STAND_INS:
-        target = _antecedent(doc, target)  # the request starts where its noun was named
+    if target is not None and (doc[target].lower_ in STAND_INS or doc[target].pos_ in ("PRON", "DET", "NUM")):
+        target = _antecedent(doc, target)  # "any of the footstools": those; the request starts where its noun was named
         chosen = min(chosen, next(i for i, s in enumerate(sentences) if s.start <= target < s.end))
     lemma = doc[target].lemma_ if target is not None else None
     while request_end < len(sentences) and (readings[request_end][0] in ("continuation", "empty") or (
@@ -235,6 +238,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
+    if subject is None and root.pos_ in ("VERB", "AUX") and _noun_of(root) is not None:
+        return "request", _noun_of(root)  # "trash can by the sink": a compound's last noun read as a verb
     command = _command(doc, sent)
     if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
         found = command[1]
@@ -255,7 +260,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         # "I'm by the piano and I want ...": where the speaker is, not where to go
         found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
         if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
-                                  or doc[found].head.lemma_ in _ACTIVITY_VERBS):
+                                  or doc[found].head.lemma_ in _ACTIVITY_VERBS or _made(doc[found])):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
         return ("request" if question else "personal"), found
     shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
@@ -272,14 +277,22 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     return ("request" if question else "description"), found
 
 
+def _made(token) -> bool:
+    """True for the object of a verb of making that the request brings into being: no determiner,
+    or an indefinite one ("bake a loaf", "brew coffee"), not a thing already there ("the bed")."""
+    return token.dep_ == "dobj" and token.head.lemma_ in _MAKING_VERBS \
+        and all(c.lower_ in ("a", "an", "some") for c in token.children if c.dep_ in ("det", "poss"))
+
+
 def _noun_of(token) -> int | None:
     """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
     the parse puts where a noun goes but tags otherwise ("the paint can is", "the kettle nearest to"),
     the noun compounded with it; else None."""
     if token.pos_ in NOUNS:
         return token.i
-    if token.pos_ in ("PRON", "DET", "NUM"):
-        return None
+    if token.pos_ in ("PRON", "DET", "NUM"):  # "two of the mugs": the mugs
+        named = _partitive(token)
+        return named if named is not None and token.doc[named].pos_ in NOUNS else None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
                  and c.pos_ in NOUNS and c.i == token.i - 1), None)
 
@@ -372,23 +385,38 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     return None
 
 
+#: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
+_NAMING = ("dobj", "attr", "nsubj", "ROOT")
+
+
 def _antecedent(doc, index: int) -> int:
     """The noun a stand-in word points to: "one of the benches" -> benches; "one" -> the last plural
-    noun before it ("of the three pillows, the one in the middle"); "it"/"them" -> the first noun
+    noun before it ("of the three pillows, the one in the middle"), else for a bare "one" the last
+    noun named as subject or object ("is there a stool by the desk? find me one"); "it"/"them" -> the first noun
     named before it as subject or object ("which vase holds tulips? take me to it"); the word
     itself when there is none."""
-    of = next((c for c in doc[index].children if c.dep_ == "prep" and c.lower_ == "of"), None)
-    named = next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
-                 None) if of else None
+    named = _partitive(doc[index])
     if named is not None:  # a partitive ("one of the benches"), or of a plural pronoun: what that stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
-        named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in ("dobj", "attr", "nsubj", "ROOT")]
+        named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in _NAMING]
         plural = [k for k in named if doc[k].tag_ in ("NNS", "NNPS")]  # "them": a plural noun when there is one
         return (plural if doc[index].lower_ == "them" and plural else named or [index])[0]
     if doc[index].lower_ not in ("one", "ones"):
         return index
-    return next((t.i for t in reversed(doc[:index]) if t.tag_ in ("NNS", "NNPS")), index)
+    before = list(reversed(doc[:index]))
+    plural = next((t.i for t in before if t.tag_ in ("NNS", "NNPS")), None)  # "of the three pillows, the one ..."
+    if plural is not None or any(doc[index].children):
+        return index if plural is None else plural
+    return next((t.i for t in before if t.pos_ in NOUNS and t.dep_ in _NAMING), index)  # "I need a stool, find me one"
+
+
+def _partitive(token) -> int | None:
+    """The word after "of" that `token` takes a part of ("one of the benches", "any of them"): a
+    noun or "them"; None when it takes none."""
+    of = next((c for c in token.children if c.dep_ == "prep" and c.lower_ == "of"), None)
+    return next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
+                None) if of else None
 
 
 def _noun_phrase(doc, index: int) -> tuple[int, int]:

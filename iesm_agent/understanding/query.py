@@ -15,7 +15,8 @@ from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, st
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
 _UNSPECIFIC = frozenset({"object"})
-#: weight of a category named outside the target phrase ("... to put my cup on")
+#: weight of a category named outside the target phrase when the target names no known kind
+#: ("somewhere to put my cup on")
 _THEME_WEIGHT = 0.35
 
 
@@ -26,6 +27,9 @@ class QueryInfo:
 
     text: str
     targets: dict[str, float] = field(default_factory=dict)   # named categories (1.0 head, 0.35 theme)
+    #: categories named beside the target (landmarks, things mentioned), 0.35; they are also
+    #: themes in `targets` only when the request asks for no kind or class of its own
+    landmarks: dict[str, float] = field(default_factory=dict)
     target_phrase: str | None = None                          # the head's words, as written
     generic: str | None = None                                # class noun used as target ("seating")
     rooms: dict[str, float] = field(default_factory=dict)     # canonical room -> 1.0 explicit, 0.5 implied
@@ -269,7 +273,7 @@ def analyse_query(text: str) -> QueryInfo:
     reading = _read_request(lex, text)
     info = _draft(text)
     for ruled_out in reading.ruled_out:
-        info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets)
+        info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets) | frozenset(ruled_out.landmarks)
         info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
@@ -350,6 +354,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
     attr_spans: list[Span] = []
     described = frozenset(surface[i].at for s in reading.spans if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
                           for i in range(s.start, s.end))
+    asks_kind = head is not None or any(s.has("gen") and target.start <= s.start and s.end <= target.end
+                                        for s in reading.spans)
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
         if s is head:
@@ -385,7 +391,10 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.purpose = (info.purpose or s.end - s.start > 1 or info.abstract
                             or not _in_target_phrase(reading, target, s.start))
         if s.has("cat") and not in_target:
-            info.targets.update({c: info.targets.get(c, _THEME_WEIGHT) for c in s.values("cat") if c not in _UNSPECIFIC})
+            named = {c: _THEME_WEIGHT for c in s.values("cat") if c not in _UNSPECIFIC}
+            info.landmarks.update(named)
+            if not asks_kind:  # no kind or class asked for: a thing named beside the target may be what is meant
+                info.targets.update({c: info.targets.get(c, w) for c, w in named.items()})
             landmark_words.update(lemmas[s.start:s.end])  # "the lamp next to the bed": captions naming it count
         elif s.has("gen"):
             _add_entry(afford, lex.generic[s.values("gen")[0]], 0.8)
