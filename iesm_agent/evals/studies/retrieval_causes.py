@@ -25,6 +25,7 @@ def wrong_answers(frames: Path, seed: int, work: Path) -> dict:
     """{"queries": per type, "wrong": [one row per wrong MTEFR answer, with its cause]} for `frames`."""
     from ...sim.ground_truth import GroundTruth
     from ...store import open_map
+    from ..mapping import EvalContext
     from ..mapping_causes import built_instances
     from ..observed import observed_masks
     from ..retrieval_causes import classify, gt_objects, read_wrongly, said
@@ -36,6 +37,7 @@ def wrong_answers(frames: Path, seed: int, work: Path) -> dict:
     pieces, _ = built_instances(scene, gt, frames, observed_masks(frames, gt))
     holds = {inst: obj for obj, insts in pieces.items() for inst in insts}
     objects = gt_objects(gt.objects, gt.rooms_list, vocab)
+    stacked = EvalContext.create(gt, frames).stacked
     by_id = {i.id: i for i in scene.instances}
     records = [r for r in outcome.records if r.method == METHOD]
     rows = []
@@ -55,8 +57,10 @@ def wrong_answers(frames: Path, seed: int, work: Path) -> dict:
                                       for i in pieces[target.id]),
                      "picked": f"#{picked.id} {picked.label} ({picked.room_label}): {picked.caption}" if picked else "-",
                      "picked_holds": f"{picked_gt.label} ({picked_gt.room}) {picked_gt.attributes}" if picked_gt
-                     else "no object", "hints": dict(r.hints), "misread": misread})
-    return {"queries": dict(Counter(r.type for r in records)), "wrong": rows}
+                     else "no object", "hints": dict(r.hints), "misread": misread,
+                     "stacked": target.id in stacked})
+    return {"queries": dict(Counter(r.type for r in records)), "wrong": rows,
+            "stacked_queries": sum(holds[r.target] in stacked for r in records)}
 
 
 def _cell(text: str) -> str:
@@ -78,12 +82,16 @@ def render_table(summary: dict) -> str:
              "that holds, in the order of the rows (`evals/retrieval_causes.py`). "
              f"{sum(queries.values())} queries, {len(wrong)} wrong; the map's side (labels, rooms, captions): "
              f"{sum(counts[c, t] for c in MAP_CAUSES for t in TYPES)}.", "",
-             "| cause | " + " | ".join(TYPES) + " | all |", "|---|" + "---:|" * (len(TYPES) + 1),
-             "| queries | " + " | ".join(str(queries[t]) for t in TYPES) + f" | {sum(queries.values())} |",
-             "| wrong | " + " | ".join(str(sum(w['type'] == t for w in wrong)) for t in TYPES) + f" | {len(wrong)} |"]
+             "Stacked target: the target lies over another object by half its footprint or more (an item on a "
+             "table, shelf or counter, a picture or window in its wall: the mapping and stacked tables' rule).", "",
+             "| cause | " + " | ".join(TYPES) + " | all | stacked target |", "|---|" + "---:|" * (len(TYPES) + 2),
+             "| queries | " + " | ".join(str(queries[t]) for t in TYPES) + f" | {sum(queries.values())} | {sum(s['stacked_queries'] for s in scenes)} |",
+             "| wrong | " + " | ".join(str(sum(w['type'] == t for w in wrong)) for t in TYPES)
+             + f" | {len(wrong)} | {sum(w['stacked'] for w in wrong)} |"]
     for cause in CAUSES:
+        stacked = sum(w["stacked"] for w in wrong if w["cause"] == cause)
         lines.append(f"| {cause} | " + " | ".join(str(counts[cause, t]) for t in TYPES)
-                     + f" | {sum(counts[cause, t] for t in TYPES)} |")
+                     + f" | {sum(counts[cause, t] for t in TYPES)} | {stacked} |")
     misread = [w for w in wrong if w["misread"]]
     lines += ["", f"The reading, whatever the cause above: {len(misread)} of the {len(wrong)} wrong answers have a "
               "reading (the gate's hints) that misses the query's category (not for ard), room or a said colour or "
@@ -97,10 +105,10 @@ def render_table(summary: dict) -> str:
         group = [w for w in wrong if w["cause"] == cause]
         if not group:
             continue
-        lines += [f"### {cause} ({len(group)})", "", "| seed | query | type | detail | target | on the map | picked | picked holds |",
-                  "|---:|---|---|---|---|---|---|---|"]
+        lines += [f"### {cause} ({len(group)})", "", "| seed | query | type | detail | target | stacked | on the map | picked | picked holds |",
+                  "|---:|---|---|---|---|---|---|---|---|"]
         lines += [f"| {w['seed']} | {_cell(w['query'])} | {w['type']} | {_cell(w['detail'])} | {_cell(w['target'])} | "
-                  f"{_cell(w['map'])} | {_cell(w['picked'])} | {_cell(w['picked_holds'])} |" for w in group]
+                  f"{'yes' if w['stacked'] else ''} | {_cell(w['map'])} | {_cell(w['picked'])} | {_cell(w['picked_holds'])} |" for w in group]
         lines.append("")
     lines += ["", f"Skipped: {'; '.join(summary['skipped'])}"] if summary["skipped"] else []
     return "\n".join(lines) + "\n"
