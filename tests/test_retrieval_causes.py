@@ -72,3 +72,11 @@ def test_read_wrongly(vocab):
     assert "room" in read_wrongly("ord", {**HINTS, "room": "bedroom"}, "stove", "kitchen", wanted, vocab)
     assert "category" in read_wrongly("od", {**HINTS, "obj": "sofa"}, "stove", None, wanted, vocab)
     assert read_wrongly("ard", {"desc": "black", "room": "kitchen"}, "stove", "kitchen", wanted, vocab) is None
+
+
+def test_names_abstract():
+    from iesm_agent.evals.retrieval_causes import names_abstract
+
+    assert names_abstract({"abs": "counter, stove"}, "stove")
+    assert not names_abstract({"abs": "heater"}, "microwave")
+    assert not names_abstract({}, "microwave")

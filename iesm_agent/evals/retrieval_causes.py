@@ -107,6 +107,13 @@ def read_wrongly(qtype: str, hints: dict[str, str], category: str, room: Optiona
     return None
 
 
+def names_abstract(hints: dict[str, str], category: str) -> bool:
+    """The reading of an abstract (`ard`) query names `category` (or a kind it covers, or one
+    covering it) among the categories its use phrase points to (`hints["abs"]`, comma-separated)."""
+    return any(part and (covers(category, part) or covers(part, category))
+               for part in (p.strip() for p in hints.get("abs", "").split(",")))
+
+
 def _describe(inst: Optional[Instance]) -> str:
     if inst is None:
         return "-"

@@ -28,7 +28,7 @@ def wrong_answers(frames: Path, seed: int, work: Path) -> dict:
     from ..mapping import EvalContext
     from ..mapping_causes import built_instances
     from ..observed import observed_masks
-    from ..retrieval_causes import classify, gt_objects, read_wrongly, said
+    from ..retrieval_causes import classify, gt_objects, names_abstract, read_wrongly, said
     from ..vocab import Vocabulary
     from .retrieval import run_scene
 
@@ -59,8 +59,12 @@ def wrong_answers(frames: Path, seed: int, work: Path) -> dict:
                      "picked_holds": f"{picked_gt.label} ({picked_gt.room}) {picked_gt.attributes}" if picked_gt
                      else "no object", "hints": dict(r.hints), "misread": misread,
                      "stacked": target.id in stacked})
+    abstract = Counter((r.correct, names_abstract(r.hints, vocab.spoken(objects[holds[r.target]].label)))
+                       for r in records if r.type == "ard")
     return {"queries": dict(Counter(r.type for r in records)), "wrong": rows,
-            "stacked_queries": sum(holds[r.target] in stacked for r in records)}
+            "stacked_queries": sum(holds[r.target] in stacked for r in records),
+            "abstract": {f"{'right' if right else 'wrong'}, {'names' if named else 'misses'}": n
+                         for (right, named), n in abstract.items()}}
 
 
 def _cell(text: str) -> str:
@@ -98,16 +102,25 @@ def render_table(summary: dict) -> str:
               "material (`retrieval_causes.read_wrongly`)" + (":" if misread else ".")]
     lines += [f"- seed {w['seed']} {w['type']} \"{_cell(w['query'])}\" ({w['cause']}): {_cell(w['misread'])}"
               for w in misread]
+    abstract = Counter()
+    for s in scenes:
+        abstract.update(s["abstract"])
+    lines += ["", "The abstract reading of ard queries (the gate's `abs` hint: the categories the use phrase points "
+              "to) names the target's category in "
+              f"{abstract['right, names']} of the {abstract['right, names'] + abstract['right, misses']} right answers "
+              f"and {abstract['wrong, names']} of the {abstract['wrong, names'] + abstract['wrong, misses']} wrong "
+              "ones (`retrieval_causes.names_abstract`; the wrong ones' hints are in the lists below)."]
     lines += ["", "## Every wrong answer beside the map", "",
-              "Target: ground truth (label, room, colour and material). On the map: the target's built "
+              "Reading: the gate's hints. Target: ground truth (label, room, colour and material). On the map: the target's built "
               "instances (label, room, caption). Picked: the instance MTEFR named, and the object it holds.", ""]
     for cause in CAUSES:
         group = [w for w in wrong if w["cause"] == cause]
         if not group:
             continue
-        lines += [f"### {cause} ({len(group)})", "", "| seed | query | type | detail | target | stacked | on the map | picked | picked holds |",
-                  "|---:|---|---|---|---|---|---|---|---|"]
-        lines += [f"| {w['seed']} | {_cell(w['query'])} | {w['type']} | {_cell(w['detail'])} | {_cell(w['target'])} | "
+        lines += [f"### {cause} ({len(group)})", "", "| seed | query | type | detail | reading | target | stacked | on the map | picked | picked holds |",
+                  "|---:|---|---|---|---|---|---|---|---|---|"]
+        lines += [f"| {w['seed']} | {_cell(w['query'])} | {w['type']} | {_cell(w['detail'])} | "
+                  f"{_cell(', '.join(f'{k}={v}' for k, v in sorted(w['hints'].items())))} | {_cell(w['target'])} | "
                   f"{'yes' if w['stacked'] else ''} | {_cell(w['map'])} | {_cell(w['picked'])} | {_cell(w['picked_holds'])} |" for w in group]
         lines.append("")
     lines += ["", f"Skipped: {'; '.join(summary['skipped'])}"] if summary["skipped"] else []
