@@ -59,10 +59,10 @@ def test_every_study_takes_its_documented_command_line(tmp_path, capsys):
     """Each study's own command line parses the documented options (and its extra ones) and
     refuses tuning seeds before rendering anything."""
     from iesm_agent.evals.studies import (calibration, captions, label_errors, mapping, mapping_causes, retrieval,
-                                          room_causes, rooms, stacked, storage)
+                                          retrieval_causes, room_causes, rooms, stacked, storage)
 
-    for study in (calibration, captions, label_errors, mapping, mapping_causes, retrieval, room_causes, rooms, stacked,
-                  storage):
+    for study in (calibration, captions, label_errors, mapping, mapping_causes, retrieval, retrieval_causes,
+                  room_causes, rooms, stacked, storage):
         argv = ["--seeds", "2", "--realism", "realistic", "--out", str(tmp_path / study.__name__)]
         if study is mapping:
             argv += ["--size", "small"]

@@ -15,17 +15,22 @@ from __future__ import annotations
 import asyncio
 import statistics
 from pathlib import Path
-from typing import Optional
+from typing import TYPE_CHECKING, Optional
 
 from . import (AllowTuningSeeds, Out, Realism, Seeds, Work, seeds_note, run_checked, scene_frames, scene_rows, study_command,
                study_main, write_table)
+
+if TYPE_CHECKING:
+    from ..gt_queries import TargetCounts
+    from ..runner import RunOutcome
 
 TYPES = ("o", "or", "od", "ord", "ard")
 METHODS = ("mtefr", "spr", "keyword")
 
 
-def score_scene(frames: Path, seed: int, work: Path) -> dict:
-    """O-SR per type and overall, N-SR overall, per method, on the captioned map of `frames`."""
+def run_scene(frames: Path, seed: int, work: Path) -> tuple[Path, "TargetCounts", "RunOutcome", dict]:
+    """Caption the map of `frames`, write its ground-truth suite and run every method on it in
+    `work`: (captioned map path, how the targets were found, the run's outcome, its summary)."""
     from ..gt_queries import generate_gt_suite
     from ..runner import make_config, make_variants, run_eval, write_run_outputs
     from .storage import captioned_map
@@ -37,7 +42,12 @@ def score_scene(frames: Path, seed: int, work: Path) -> dict:
     config = make_config([suite], make_variants(list(METHODS), []), "offline", gt=[str(frames)])
     run_dir = work / f"run-{seed}"
     outcome = asyncio.run(run_eval(config, run_dir, resume=run_dir.exists()))
-    summary = write_run_outputs(run_dir, config, outcome)
+    return map_path, counts, outcome, write_run_outputs(run_dir, config, outcome)
+
+
+def score_scene(frames: Path, seed: int, work: Path) -> dict:
+    """O-SR per type and overall, N-SR overall, per method, on the captioned map of `frames`."""
+    _, counts, outcome, summary = run_scene(frames, seed, work)
     out = {"queries": len(outcome.suite.entries), "dropped": counts.dropped, "by_own_instance": counts.own}
     for method in METHODS:
         m = summary["methods"][method]
