@@ -393,3 +393,13 @@ def test_a_name_said_in_full_is_not_a_coarser_labels(tmp_path):
 def test_the_noun_after_a_viewpoint_clause_is_the_target(text, target, facing):
     q = parse_query(text)
     assert (q.target, q.facing) == (target, facing)
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the nightstand on the east side of the bed", 3),   # compass words: x east, y north on the plan
+    ("which nightstand is at the western end of the bed", 2),
+    ("the southern plant", 17),
+    ("the plant in the north-east", 15),
+])
+def test_compass_words_are_sides_on_the_plan_whoever_looks(room, query, best):
+    assert spatial(room, query)[0] == best

@@ -29,6 +29,13 @@ _CUES: dict[tuple[str, ...], str] = {
     ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
     ("across", "from"): "opposite", ("across",): "opposite",
 }
+#: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
+#: sides with an axis of their own, whoever looks ("the north side of the table", "the west one")
+COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
+COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
+                for a in ("north", "south") for b in ("east", "west")})
+_CUES.update({cue: kind for kind in COMPASS for cue in (tuple(kind.split("-")), (kind.replace("-", ""),),
+                                                         (kind.replace("-", "") + "ern",))})
 _EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
              "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
              "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
@@ -419,7 +426,8 @@ class _Reader:
         toks, out = self.toks, self.out
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
-        side_noun = nxt in ("left", "right") and self.span_at(self.noun_of(self.words[i])) is None
+        side_noun = (nxt in ("left", "right") or (nxt,) in _CUES and _CUES[(nxt,)] in COMPASS) \
+            and self.span_at(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind != "facing" and len(words) == 1 and self.said_by_someone(i - 1):
@@ -547,7 +555,7 @@ class _Reader:
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
         toks, out, rel = self.toks, self.out, Relation(kind)
-        if kind in ("left", "right", "front", "behind"):
+        if kind in ("left", "right", "front", "behind") or kind in COMPASS:
             if not self.side_of() and self.says_which_landmark(kind):
                 return i
             if self.inverse_by_pronoun(kind):

@@ -19,7 +19,7 @@ import numpy as np
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
 from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
-from ...understanding.spatial import SIZE_EXTREMES, Relation, parse_query
+from ...understanding.spatial import COMPASS, SIZE_EXTREMES, Relation, parse_query
 from .prompt import Prompt
 
 #: words in an expert's gate description that make the gate score it by the query's relations
@@ -269,8 +269,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         return _rank_score(value)
     viewer, look = _view(scene, targets, facing)
     left = np.array([-look[1], look[0]])
-    if kind in ("left", "right", "front", "behind"):
-        axis = {"left": left, "right": -left, "front": -look, "behind": look}[kind]
+    if kind in ("left", "right", "front", "behind") or kind in COMPASS:
+        axis = np.array(COMPASS[kind]) if kind in COMPASS else \
+            {"left": left, "right": -left, "front": -look, "behind": look}[kind]
         if not marks:
             return _rank_score(tb.center[:, :2] @ axis)
         lm = marks[0]
