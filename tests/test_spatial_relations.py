@@ -403,3 +403,12 @@ def test_the_noun_after_a_viewpoint_clause_is_the_target(text, target, facing):
 ])
 def test_compass_words_are_sides_on_the_plan_whoever_looks(room, query, best):
     assert spatial(room, query)[0] == best
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the chair between the two red ones", 11),           # "ones": others of the target's kind, with their colour
+    ("which chair sits in between the red ones?", 11),
+    ("the chair by the door, not the blue one", 10),      # an excluded "one" is no landmark
+])
+def test_a_one_the_relation_takes_is_another_of_the_targets_kind(room, query, best):
+    assert spatial(room, query)[0] == best

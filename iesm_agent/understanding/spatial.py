@@ -339,7 +339,18 @@ class _Reader:
         return owner is not None and (self.span_at(owner) == self.target_at or self.points_back(owner))
 
     def landmark(self, rel: Relation, pos: int) -> bool:
-        """Take the next free category phrase from `pos` as a landmark of `rel`."""
+        """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
+        takes stands for another of the target's kind ("the mug beside the chipped one")."""
+        objects = self.cue_objects()  # with an apposition the parser hangs "one" on ("the metal [one]")
+        objects |= {k for k, w in enumerate(self.structure.words) if w.head in objects and w.dep == "appos"}
+        one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
+                    and self.words[i] in objects), None)
+        if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
+                and not any(self.word(i).text.lower() == "of" for i in range(one + 1, min(one + 2, len(self.toks)))):
+            rel.landmarks.append(tuple(self.cat_at[self.target_at].values("cat")))
+            rel.landmark_attrs.append(self.attrs_before(one))
+            self.last_landmark_end = one + 1
+            return True
         j = self.next_cat(pos)
         if j is None:
             return False
