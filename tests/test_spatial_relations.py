@@ -19,7 +19,8 @@ def box(i, label, center, size, **extra):
 
 def make_store(tmp_path, objects, name="tiny"):
     path = tmp_path / f"{name}.json"
-    path.write_text(json.dumps({"scene_id": name, "rooms": [{"id": 1, "label": "bedroom"}], "objects": objects}))
+    rooms = [{"id": k, "label": label} for k, label in enumerate(dict.fromkeys(o["room"] for o in objects), 1)]
+    path.write_text(json.dumps({"scene_id": name, "rooms": rooms, "objects": objects}))
     return MapStore(import_objects(path))
 
 
@@ -412,3 +413,16 @@ def test_compass_words_are_sides_on_the_plan_whoever_looks(room, query, best):
 ])
 def test_a_one_the_relation_takes_is_another_of_the_targets_kind(room, query, best):
     assert spatial(room, query)[0] == best
+
+
+def test_the_viewer_stands_in_the_targets_own_room_not_every_room_of_its_type(tmp_path):
+    # two bedrooms: the viewer looks at the near bed from the middle of its own room (looking
+    # north, left is west), not from between both rooms
+    objects = [box(1, "bed", (2.0, 3.0, 0.3), (1.6, 2.0, 0.6)),
+               box(2, "nightstand", (0.9, 3.7, 0.3), (0.4, 0.4, 0.6)),
+               box(3, "nightstand", (3.1, 3.7, 0.3), (0.4, 0.4, 0.6)),
+               box(4, "wardrobe", (0.3, 0.5, 1.0), (0.6, 1.0, 2.0)),
+               box(5, "bed", (10.0, 1.0, 0.3), (1.6, 2.0, 0.6), room="guest bedroom"),
+               box(6, "desk", (10.0, 9.0, 0.4), (1.2, 0.6, 0.8), room="guest bedroom")]
+    store = make_store(tmp_path, objects)
+    assert spatial(store, "facing the bed, the nightstand on the left")[0] == 2

@@ -37,7 +37,8 @@ class _Scene:
     boxes: geo.Boxes
     concepts: list[tuple[tuple[str, float], ...]]
     attrs: list[frozenset]
-    rooms: list[str | None]
+    rooms: list[str | None]        # canonical room types ("kids room" and "bedroom": bedroom)
+    room_names: list[str | None]   # the rooms as the map names them: one room's objects
     on: list[frozenset[int]]
     under: list[frozenset[int]]
     is_candidate: np.ndarray
@@ -54,6 +55,7 @@ class _Line:
     concepts: tuple[tuple[str, float], ...]
     attrs: frozenset
     room: str | None
+    room_name: str | None
     on: frozenset[int]
     under: frozenset[int]
     label_words: frozenset[str]
@@ -81,6 +83,7 @@ def _read_line(line: str) -> _Line | None:
                  concepts=label_concepts(str(data.get("label") or "")),
                  attrs=record[1].attrs if record else frozenset(),
                  room=room_of(str(data["room"])) if data.get("room") else None,
+                 room_name=str(data["room"]) if data.get("room") else None,
                  on=ids(data.get("on")), under=ids(data.get("under")),
                  label_words=frozenset(lex.lemma(t) for t in lex.tokens(str(data.get("label") or ""))))
 
@@ -105,7 +108,7 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
                       np.array([r.box[0] for r, _ in keep], np.float64).reshape(-1, 3),
                       np.array([r.box[1] for r, _ in keep], np.float64).reshape(-1, 3))
     return _Scene(boxes=boxes, concepts=[r.concepts for r, _ in keep], attrs=[r.attrs for r, _ in keep],
-                  rooms=[r.room for r, _ in keep], on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
+                  rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep], on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
                   is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep])
 
 
@@ -159,9 +162,11 @@ def _not_named_in_part(scene: _Scene, rows: np.ndarray, head: frozenset[str]) ->
 
 
 def _extent(scene: _Scene, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """xy (lo, hi) of the objects in the rooms of `rows` (all objects when rooms are unknown)."""
-    rooms = {scene.rooms[r] for r in rows}
-    same = np.array([room in rooms for room in scene.rooms], bool) if None not in rooms else np.ones(len(scene.rooms), bool)
+    """xy (lo, hi) of the objects in the rooms of `rows`, each room as the map names it (two
+    bedrooms are two rooms; all objects when rooms are unknown)."""
+    rooms = {scene.room_names[r] for r in rows}
+    same = np.array([room in rooms for room in scene.room_names], bool) if None not in rooms \
+        else np.ones(len(scene.room_names), bool)
     return scene.boxes.lo[same, :2].min(axis=0), scene.boxes.hi[same, :2].max(axis=0)
 
 
