@@ -426,3 +426,18 @@ def test_the_viewer_stands_in_the_targets_own_room_not_every_room_of_its_type(tm
                box(6, "desk", (10.0, 9.0, 0.4), (1.2, 0.6, 0.8), room="guest bedroom")]
     store = make_store(tmp_path, objects)
     assert spatial(store, "facing the bed, the nightstand on the left")[0] == 2
+
+
+@pytest.mark.parametrize("query, best", [
+    ("seen from the sofa, the lamp on the right", 5),     # the viewer sits on the sofa, looking into the room
+    ("Sitting on the couch, take me to the lamp on my left", 4),
+    ("the lamp on the right as you look from the foot of the sofa", 4),  # at its foot: facing the sofa
+])
+def test_the_viewer_can_sit_or_stand_at_a_landmark(tmp_path, query, best):
+    lounge = [box(1, "sofa", (2.0, 0.5, 0.4), (2.0, 0.9, 0.8), room="living room"),
+              box(2, "side table", (0.6, 0.5, 0.3), (0.5, 0.5, 0.6), room="living room"),
+              box(3, "side table", (3.4, 0.5, 0.3), (0.5, 0.5, 0.6), room="living room"),
+              box(4, "lamp", (0.6, 0.5, 0.8), (0.3, 0.3, 0.4), room="living room"),
+              box(5, "lamp", (3.4, 0.5, 0.8), (0.3, 0.3, 0.4), room="living room"),
+              box(6, "tv", (2.0, 4.0, 1.0), (1.2, 0.1, 0.7), room="living room")]
+    assert spatial(make_store(tmp_path, lounge), query)[0] == best

@@ -56,6 +56,13 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
+#: parts of a thing that a viewer there faces ("at the foot of the bed", "in front of the desks")
+_FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
+#: verbs of seeing after which "from" says where the viewer is
+_SEEING = frozenset({"seen", "viewed", "looking", "looked", "look", "watching", "facing"})
+#: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
+#: when it opens the sentence ("Sitting on the sofa, ..."; not "the mug sitting on the table")
+_SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
 #: parse relations of a noun that another word places or takes, so no target ("next to [the chair]")
 _LANDMARK_DEPS = frozenset({"pobj", "dobj"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
@@ -99,6 +106,8 @@ class SpatialQuery:
     attrs: tuple[tuple[str, str], ...] = ()
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
+    #: where the viewer is, looking into the room ("seen from the sofa", "sitting on the couch")
+    viewer_at: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
 
@@ -407,7 +416,7 @@ class _Reader:
         if words == ("at",) and not self.beside(self.words[i]):
             return i + 1
         if kind != "facing" and self.viewer_place():  # "when standing by the door, ...": where the viewer is
-            self.landmark(Relation(kind), i + len(words))  # its noun is no target
+            self.viewer_landmark(Relation(kind), i + len(words))  # its noun is no target
             return i + len(words)
         if is_destination(toks, i, len(words)):
             return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
@@ -487,11 +496,13 @@ class _Reader:
             k = st.words[k].head  # "at [the centre] of the hall": through its preposition
         if k is not None and st.words[k].pos == "ADP":
             k = st.words[k].head
-        if k is None or st.words[k].text.lower() not in _STANDING:
+        verb = st.words[k].text.lower() if k is not None else ""
+        if verb not in _STANDING | _SITTING:
             return False
         subjects = st.children(k, "nsubj")
+        opens = k == 0 or st.words[k - 1].text in (",", ".", ";", ":")
         return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
-            bool(subjects) or st.words[k].dep in ("advcl", "ROOT", "pcomp"))
+            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT", "pcomp") and (verb in _STANDING or opens)))
 
     def place_of(self, i: int, kind: str) -> int:
         """"the middle of X", "the corner of X": relative to the object X; the middle one of the
@@ -519,9 +530,32 @@ class _Reader:
             described.landmark_where = kind
         return True
 
+    def viewer_landmark(self, rel: Relation, pos: int) -> None:
+        """Take the landmark at `pos` as where the viewer is ("seen from the sofa") when the cue
+        takes it; in front of it or at its foot or end the viewer looks at it ("from the foot of
+        the bed": facing the bed)."""
+        objects = self.cue_objects()
+        if not self.landmark(rel, pos) or self.out.facing:
+            return
+        j = self.taken[id(rel)][-1]
+        part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
+        if not objects & set(self._span_words(j)) and not part:
+            return  # "standing in the middle of the room ...": no object the cue takes
+        at = tuple(self.cat_at[j].values("cat"))
+        if part:
+            self.out.facing = at
+        else:
+            self.out.viewer_at = at
+
     def ordinal_from(self, i: int, nxt: str) -> int:
-        """"from" after an ordinal ("the second from the left", "third from the door")."""
+        """"from" after an ordinal ("the second from the left", "third from the door"); with no
+        ordinal, after a verb of seeing or opening a clause, where the viewer is ("seen from the
+        couch", "From the doorway, ..."; not "it goes from the floor to the ceiling")."""
         if self.pending_ordinal is None:
+            st, k = self.structure, self.cue_word
+            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING
+                                  or k == 0 or st.words[k - 1].text in (",", ".", ";", ":")):
+                self.viewer_landmark(Relation("from"), i)
             return i
         if nxt in ("left", "right"):
             self.pending_ordinal.value = nxt

@@ -178,15 +178,34 @@ def _rank_score(values: np.ndarray) -> np.ndarray:
     return 1.0 - ranks / max(ranks.max(), 1)
 
 
-def _view(scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(viewer xy, unit view direction): from the middle of the room towards the facing landmark
-    (nearest to the targets) or towards the targets."""
+@dataclass(frozen=True)
+class _Viewpoint:
+    """Rows of the scene the viewer looks at (`facing`) and stands or sits at (`at`); either may
+    be empty."""
+
+    facing: np.ndarray
+    at: np.ndarray
+
+
+def _nearest(scene: _Scene, rows: np.ndarray, xy: np.ndarray) -> int:
+    """The row of `rows` whose centre is nearest to the point `xy`."""
+    return int(rows[np.argmin(np.hypot(*(scene.boxes.center[rows, :2] - xy).T))])
+
+
+def _view(scene: _Scene, targets: np.ndarray, view: _Viewpoint) -> tuple[np.ndarray, np.ndarray]:
+    """(viewer xy, unit view direction): from where the viewer is (the middle of the targets'
+    room, or the landmark they are at, nearest to the targets) towards the landmark they face,
+    else towards the targets; from a landmark whose own footprint holds the targets' middle (the
+    cushions on the sofa one sits on), into the room."""
     lo, hi = _extent(scene, targets)
-    viewer = (lo + hi) / 2
+    middle = (lo + hi) / 2
     tc = scene.boxes.center[targets, :2].mean(axis=0)
-    if len(facing):
-        f = facing[np.argmin(np.hypot(*(scene.boxes.center[facing, :2] - tc).T))]
-        look = scene.boxes.center[f, :2] - viewer
+    at = _nearest(scene, view.at, tc) if len(view.at) else None
+    viewer = middle if at is None else scene.boxes.center[at, :2]
+    if len(view.facing):
+        look = scene.boxes.center[_nearest(scene, view.facing, tc), :2] - viewer
+    elif at is not None and np.all((scene.boxes.lo[at, :2] <= tc) & (tc <= scene.boxes.hi[at, :2])):
+        look = middle - viewer
     else:
         look = tc - viewer
     norm = float(np.hypot(*look))
@@ -198,7 +217,7 @@ _CONTACT = ("on", "under", "above", "below", "with")
 _MET = 0.7
 
 
-def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: np.ndarray) -> np.ndarray | None:
+def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _Viewpoint) -> np.ndarray | None:
     """(len(targets),) scores in [0, 1]; None when a landmark is missing from the map."""
     boxes = scene.boxes
     tb = boxes.take(targets)
@@ -208,10 +227,10 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
         if not len(rows):
             return None
         if rel.landmark_where:
-            where = _relation_scores(Relation(rel.landmark_where), scene, rows, facing)
+            where = _relation_scores(Relation(rel.landmark_where), scene, rows, view)
             rows = rows[where >= where.max() - 1e-9]
         for size in (v for k, v in attrs if k == "size" and v in SIZE_EXTREMES):
-            extreme = _relation_scores(Relation("extreme", value=SIZE_EXTREMES[size]), scene, rows, facing)
+            extreme = _relation_scores(Relation("extreme", value=SIZE_EXTREMES[size]), scene, rows, view)
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
@@ -272,7 +291,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, facing: 
                  "short": -size[:, 2], "high": tb.hi[:, 2] + tb.lo[:, 2], "low": -(tb.hi[:, 2] + tb.lo[:, 2]),
                  "wide": size[:, :2].max(axis=1)}[rel.value]
         return _rank_score(value)
-    viewer, look = _view(scene, targets, facing)
+    viewer, look = _view(scene, targets, view)
     left = np.array([-look[1], look[0]])
     if kind in ("left", "right", "front", "behind") or kind in COMPASS:
         axis = np.array(COMPASS[kind]) if kind in COMPASS else \
@@ -314,7 +333,7 @@ def rank(prompt: Prompt) -> dict:
     if sq.target:
         kind = _of_kind(scene, sq.target, sq.attrs)
     else:  # "the one on the left": anything that is not a landmark
-        marks = [c for r in sq.relations for c in r.landmarks] + ([sq.facing] if sq.facing else [])
+        marks = [c for r in sq.relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]
         kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
     targets = np.flatnonzero(kind & scene.is_candidate)
     reading = analyse_query(prompt.query)
@@ -324,7 +343,8 @@ def rank(prompt: Prompt) -> dict:
         targets = targets[in_room]
     if not len(targets):
         return abstain("no candidate of the target kind")
-    facing = np.flatnonzero(_of_kind(scene, sq.facing, ())) if sq.facing else np.zeros(0, np.int64)
+    view = _Viewpoint(*(np.flatnonzero(_of_kind(scene, cats, ())) if cats else np.zeros(0, np.int64)
+                        for cats in (sq.facing, sq.viewer_at)))
     if sq.target and reading.head_words:
         targets = targets[_not_named_in_part(scene, targets, reading.head_words)]
         total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
@@ -335,7 +355,7 @@ def rank(prompt: Prompt) -> dict:
     for rel in sq.relations:
         if rel.kind == "extreme" and not rel.negated:
             continue  # ranked below, among the placed targets
-        scores = _relation_scores(rel, scene, targets, facing)
+        scores = _relation_scores(rel, scene, targets, view)
         if scores is None:
             return abstain("a landmark the map lacks")  # no guess
         total += 1.0 - scores if rel.negated else scores
@@ -343,7 +363,7 @@ def rank(prompt: Prompt) -> dict:
             placed &= scores >= _MET
     among = placed if placed.any() else np.ones(len(targets), bool)
     for rel in comparisons:  # "the smaller of the boxes on the bench": compared among those on it
-        total[among] += _relation_scores(rel, scene, targets[among], facing)
+        total[among] += _relation_scores(rel, scene, targets[among], view)
     order = np.lexsort((scene.boxes.ids[targets], -np.round(total, 9)))
     return {"ranked_instance_ids": [int(scene.boxes.ids[targets[k]]) for k in order[:prompt.kappa]]}
 
