@@ -397,7 +397,7 @@ def test_the_noun_after_a_viewpoint_clause_is_the_target(text, target, facing):
 
 
 @pytest.mark.parametrize("query, best", [
-    ("the nightstand on the east side of the bed", 3),   # compass words: x east, y north on the plan
+    ("the nightstand to the east of the bed", 3),          # compass words: x east, y north on the plan
     ("which nightstand is at the western end of the bed", 2),
     ("the southern plant", 17),
     ("the plant in the north-east", 15),
@@ -407,8 +407,8 @@ def test_compass_words_are_sides_on_the_plan_whoever_looks(room, query, best):
 
 
 @pytest.mark.parametrize("query, best", [
-    ("the chair between the two red ones", 11),           # "ones": others of the target's kind, with their colour
-    ("which chair sits in between the red ones?", 11),
+    ("the chair between those two red ones", 11),           # "ones": others of the target's kind, with their colour
+    ("which chair sits between both red ones?", 11),
     ("the chair by the door, not the blue one", 10),      # an excluded "one" is no landmark
 ])
 def test_a_one_the_relation_takes_is_another_of_the_targets_kind(room, query, best):

@@ -30,7 +30,7 @@ _CUES: dict[tuple[str, ...], str] = {
     ("across", "from"): "opposite", ("across",): "opposite",
 }
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
-#: sides with an axis of their own, whoever looks ("the north side of the table", "the west one")
+#: sides with an axis of their own, whoever looks ("the north side of the desk", "the west one")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
                 for a in ("north", "south") for b in ("east", "west")})
@@ -56,12 +56,12 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _WALL_WORDS = {"wall", "walls"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
-#: parts of a thing that a viewer there faces ("at the foot of the bed", "in front of the desks")
+#: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: verbs of seeing after which "from" says where the viewer is
 _SEEING = frozenset({"seen", "viewed", "looking", "looked", "look", "watching", "facing"})
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
-#: when it opens the sentence ("Sitting on the sofa, ..."; not "the mug sitting on the table")
+#: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
 #: parse relations of a noun that another word places or takes, so no target ("next to [the chair]")
 _LANDMARK_DEPS = frozenset({"pobj", "dobj"})
@@ -106,7 +106,7 @@ class SpatialQuery:
     attrs: tuple[tuple[str, str], ...] = ()
     relations: list[Relation] = field(default_factory=list)
     facing: tuple[str, ...] = ()
-    #: where the viewer is, looking into the room ("seen from the sofa", "sitting on the couch")
+    #: where the viewer is ("viewed from the settee", "if I sit on the ottoman")
     viewer_at: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
@@ -531,7 +531,7 @@ class _Reader:
         return True
 
     def viewer_landmark(self, rel: Relation, pos: int) -> None:
-        """Take the landmark at `pos` as where the viewer is ("seen from the sofa") when the cue
+        """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
         takes it; in front of it or at its foot or end the viewer looks at it ("from the foot of
         the bed": facing the bed)."""
         objects = self.cue_objects()
@@ -540,7 +540,7 @@ class _Reader:
         j = self.taken[id(rel)][-1]
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
         if not objects & set(self._span_words(j)) and not part:
-            return  # "standing in the middle of the room ...": no object the cue takes
+            return  # "standing at the centre of the hall, ...": no object the cue takes
         at = tuple(self.cat_at[j].values("cat"))
         if part:
             self.out.facing = at
@@ -550,7 +550,7 @@ class _Reader:
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
         ordinal, after a verb of seeing or opening a clause, where the viewer is ("seen from the
-        couch", "From the doorway, ..."; not "it goes from the floor to the ceiling")."""
+        settee", "From the doorway, ..."; not "a pipe runs from the boiler to the sink")."""
         if self.pending_ordinal is None:
             st, k = self.structure, self.cue_word
             if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING
