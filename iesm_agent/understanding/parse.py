@@ -374,11 +374,10 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
                 return found
     for child in verb.children:
         if child.dep_ in _CLAUSES and child.pos_ in ("VERB", "AUX"):
-            found = _object_of(doc, child)
-            if found is None and child.dep_ == "ccomp":  # "show me where the towels are"
-                found = next((g.i for g in child.children if g.dep_ == "nsubj" and g.pos_ in NOUNS), None)
-            if found is not None:
-                return found
+            subject = next((g.i for g in child.children if g.dep_ == "nsubj" and g.pos_ in NOUNS), None)
+            found = subject if child.dep_ == "ccomp" and subject is not None else _object_of(doc, child)
+            if found is not None:  # a clause's noun subject: "show me where the towels are",
+                return found       # "find the stool pushed under the bench" (parsed as a clause)
     for child in verb.children:
         if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
             return child.i
