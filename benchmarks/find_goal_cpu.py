@@ -8,7 +8,8 @@ Also measured: the English parser one sentence at a time (as a query asked alone
 `nlp.pipe` over the same sentences in batches of 40, per pipeline component too, and the burst
 path: the queries parsed in batches of 40 as `iesm serve` parses the queries waiting together
 (`understanding.parse_queries`), then retrieved; and what embedding a sentence the encoder has not
-seen costs (the bench queries' embeddings come back from the on-disk vector store).
+seen costs (the bench queries' embeddings come back from the on-disk vector store), and the MCP
+client's check of a find_goal result against the listed output schema.
 
 Run from the repository root: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/find_goal_cpu.py
 (not part of `make bench`: it reports shares, no target).
@@ -159,6 +160,29 @@ def parser_batches(texts: list[str]) -> tuple[float, float, dict[str, tuple[floa
     return one, batched, per_component
 
 
+async def result_checks(asked: list[str]) -> tuple[float, float]:
+    """CPU us per `find_goal` result of the MCP SDK client's check against the listed output schema
+    (`jsonschema`, as `ClientSession` validates structured content), with the schema listed now
+    (`results.output_schema`) and with pydantic's own (`FindGoalResult.model_json_schema()`)."""
+    from jsonschema.validators import validator_for
+    from referencing import Registry
+
+    from iesm_agent.server.results import FindGoalResult, output_schema
+
+    service = MapService.open(["apartment"])
+    results = [await service.find_goal(q) for q in asked]
+    await service.aclose()
+    out = []
+    for schema in (output_schema(FindGoalResult), FindGoalResult.model_json_schema()):
+        validator = validator_for(schema)(schema, registry=Registry())  # as the SDK's client builds it
+        t0 = time.process_time()
+        for _ in range(5):
+            for result in results:
+                list(validator.iter_errors(result))
+        out.append((time.process_time() - t0) * 1e6 / (5 * len(results)))
+    return out[0], out[1]
+
+
 def new_sentence_embedding(texts: list[str]) -> tuple[float, float] | None:
     """(CPU ms, wall ms) per sentence the encoder's backend takes for a sentence it has not seen
     (one at a time, as a new query is embedded; the backend directly, so nothing is stored), or
@@ -196,6 +220,9 @@ def main() -> None:
           f"({len(pool)} suite queries); per component, alone / batched:")
     for name, (alone_ms, batch_ms) in per_component.items():
         print(f"    {name:<36} {alone_ms:6.3f} / {batch_ms:6.3f}")
+    listed, pydantic_schema = asyncio.run(result_checks(asked[:40]))
+    print(f"  the MCP client's check of a find_goal result against its output schema: {listed:.0f} us "
+          f"(pydantic's own schema: {pydantic_schema:.0f} us)")
     embedded = new_sentence_embedding(asked[:40])
     if embedded is not None:
         print(f"  a sentence the encoder has not seen (a new query's embedding, not in the figures above): "
