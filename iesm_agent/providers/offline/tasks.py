@@ -511,10 +511,11 @@ def _embedding_scores(encoder, query: str, block: _Block) -> np.ndarray:
     return np.clip((sims - 0.15) / 0.5, 0.0, 1.0)
 
 
-@lru_cache(maxsize=64)
+@lru_cache(maxsize=16)
 def _text_vectors(block: _Block, encoder) -> np.ndarray:
     """(N, dim) read-only: the encoder's rows for the block's candidate texts, gathered once per
-    block (from the encoder's memo, 57 rows cost about 50 us a query)."""
+    block (from the encoder's memo, 57 rows cost about 50 us a query); a query's gate and experts
+    show one block, and on a map whose candidates are all shown every query does."""
     rows = encoder.encode([r.text or "object" for r in block.records])
     rows.flags.writeable = False
     return rows
