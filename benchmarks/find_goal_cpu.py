@@ -7,7 +7,9 @@ model's calls on the server's loop, which shows what the pool's hand-off costs).
 Also measured: the English parser one sentence at a time (as a query asked alone is read) against
 `nlp.pipe` over the same sentences in batches of 40, per pipeline component too, and the burst
 path: the queries parsed in batches of 40 as `iesm serve` parses the queries waiting together
-(`understanding.parse_queries`), then retrieved.
+(`understanding.parse_queries`), then retrieved; and what embedding a sentence the encoder has not
+seen costs (the bench queries' embeddings come back from the on-disk vector store), and the MCP
+client's check of a find_goal result against the listed output schema.
 
 Run from the repository root: HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/find_goal_cpu.py
 (not part of `make bench`: it reports shares, no target).
@@ -46,7 +48,7 @@ PARTS = (("English parser (spaCy)", query, "parse_request"),
          ("  the spatial expert's scene read", spatial, "_read_scene"),
          ("spatial reading for the experts asked", mtefr, "parse_query"),
          ("prompt rendering (Jinja)", calls.Session, "render"),
-         ("prompt hashes for the trace", calls, "prompt_sha256"),
+         ("prompt hashes for the trace", calls.PromptHasher, "__call__"),
          ("expert replies read", calls.Session, "ranking"),
          ("gate reply read", mtefr, "_gate_weights"),
          ("fusion", mtefr, "fuse"),
@@ -158,6 +160,46 @@ def parser_batches(texts: list[str]) -> tuple[float, float, dict[str, tuple[floa
     return one, batched, per_component
 
 
+async def result_checks(asked: list[str]) -> tuple[float, float]:
+    """CPU us per `find_goal` result of the MCP SDK client's check against the listed output schema
+    (`jsonschema`, as `ClientSession` validates structured content), with the schema listed now
+    (`results.output_schema`) and with pydantic's own (`FindGoalResult.model_json_schema()`)."""
+    from jsonschema.validators import validator_for
+    from referencing import Registry
+
+    from iesm_agent.server.results import FindGoalResult, output_schema
+
+    service = MapService.open(["apartment"])
+    results = [await service.find_goal(q) for q in asked]
+    await service.aclose()
+    out = []
+    for schema in (output_schema(FindGoalResult), FindGoalResult.model_json_schema()):
+        validator = validator_for(schema)(schema, registry=Registry())  # as the SDK's client builds it
+        t0 = time.process_time()
+        for _ in range(5):
+            for result in results:
+                list(validator.iter_errors(result))
+        out.append((time.process_time() - t0) * 1e6 / (5 * len(results)))
+    return out[0], out[1]
+
+
+def new_sentence_embedding(texts: list[str]) -> tuple[float, float] | None:
+    """(CPU ms, wall ms) per sentence the encoder's backend takes for a sentence it has not seen
+    (one at a time, as a new query is embedded; the backend directly, so nothing is stored), or
+    None without an encoder. The bench queries' own embeddings are read back from the on-disk
+    vector store once any run has embedded them, so the figures above leave this out."""
+    from iesm_agent.embeddings import get_encoder
+
+    encoder = get_encoder()
+    if encoder is None:
+        return None
+    encoder.backend.encode_batch(texts[:1])
+    t0, w0 = time.process_time(), time.perf_counter()
+    for text in texts:
+        encoder.backend.encode_batch([text])
+    return (time.process_time() - t0) * 1000 / len(texts), (time.perf_counter() - w0) * 1000 / len(texts)
+
+
 def main() -> None:
     pool = queries()
     asked = pool[40:160]  # bench_server's burst queries
@@ -178,6 +220,13 @@ def main() -> None:
           f"({len(pool)} suite queries); per component, alone / batched:")
     for name, (alone_ms, batch_ms) in per_component.items():
         print(f"    {name:<36} {alone_ms:6.3f} / {batch_ms:6.3f}")
+    listed, pydantic_schema = asyncio.run(result_checks(asked[:40]))
+    print(f"  the MCP client's check of a find_goal result against its output schema: {listed:.0f} us "
+          f"(pydantic's own schema: {pydantic_schema:.0f} us)")
+    embedded = new_sentence_embedding(asked[:40])
+    if embedded is not None:
+        print(f"  a sentence the encoder has not seen (a new query's embedding, not in the figures above): "
+              f"{embedded[0]:.2f} ms of CPU, {embedded[1]:.2f} ms wall")
 
 
 if __name__ == "__main__":

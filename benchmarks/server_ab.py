@@ -1,8 +1,9 @@
 """Interleaved A/B of `bench_server.py`'s measurement on two or more source trees: each round starts
 each tree's `iesm serve` in turn (the tree as working directory, so its `iesm_agent` is the one
 imported) and measures 40 first-time calls one by one and three bursts of 40 first-time queries
-against the SDK floor, embeddings as installed. Per round and tree it prints the server's CPU per
-call in the bursts, the bursts' p50 over the floor's, and the one-by-one p50; then the medians.
+against the SDK floor, embeddings as installed. Per round and tree it prints the server's and the
+client's CPU per call in the bursts, the bursts' p50 over the floor's, and the one-by-one p50;
+then the medians.
 On a shared machine only figures from the same rounds compare.
 
 A tree of an older commit: `git archive <commit> | tar -x -C DIR`.
@@ -43,12 +44,15 @@ def main() -> None:
                 with contextlib.redirect_stdout(io.StringIO()):
                     out = bench_server.run_config(env, sequential, bursts, floor, cold=False)
                 figures[tree].append(out)
-                print(f"round {r} {tree}: server CPU per call {out['burst_server_cpu_ms']:.2f} ms, burst p50 "
+                print(f"round {r} {tree}: server CPU per call {out['burst_server_cpu_ms']:.2f} ms (client "
+                      f"{out['burst_client_cpu_ms']:.2f}), burst p50 "
                       f"{out['burst_p50']:.0f} ms / floor {out['floor_p50']:.0f} ms = {out['floor_ratio']:.2f}x, "
                       f"one by one p50 {out['p50_first']:.1f} ms", flush=True)
     for tree, outs in figures.items():
         print(f"{tree}: medians over {args.rounds} rounds: server CPU per call "
-              f"{statistics.median(o['burst_server_cpu_ms'] for o in outs):.2f} ms, ratio "
+              f"{statistics.median(o['burst_server_cpu_ms'] for o in outs):.2f} ms (client "
+              f"{statistics.median(o['burst_client_cpu_ms'] for o in outs):.2f} ms), burst p50 "
+              f"{statistics.median(o['burst_p50'] for o in outs):.0f} ms, ratio "
               f"{statistics.median(o['floor_ratio'] for o in outs):.2f}x, one by one p50 "
               f"{statistics.median(o['p50_first'] for o in outs):.1f} ms")
 

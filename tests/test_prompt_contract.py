@@ -79,6 +79,28 @@ def test_the_six_prompts_of_a_query_share_one_byte_identical_prefix():
     assert os.path.commonprefix(experts).endswith("<focus>") and all(t.count("\n") <= 3 for t in tails)
 
 
+def test_hashing_the_shared_prefix_once_gives_each_prompt_its_whole_hash():
+    """`PromptHasher` (the shared part hashed once per query, then each tail) equals
+    `prompt_sha256` on the six prompts of two queries in turn, on prompts whose system text or
+    shared part differs from the one before, and on messages of another shape."""
+    from iesm_agent.providers.base import Message
+    from iesm_agent.retrieval.calls import PromptHasher, prompt_sha256
+
+    model = _Recorder()
+    retriever = Retriever(MapStore(open_map("apartment")), provider=model)
+    retriever.ask("the lamp next to the sofa")
+    retriever.ask("somewhere to sleep")
+    system, user = model.seen[0]
+    other = [[system, Message(role="user", content=user.text().replace("lamp", "lamps", 1))],
+             [Message(role="system", content=system.text() + " "), user],
+             [Message(role="user", content="<query>\"x\"</query> rank")], [system],
+             [system, Message(role="user", content="no fenced query here")], [user, system]]
+    hasher = PromptHasher()
+    for messages in model.seen + other + model.seen[:2]:
+        assert hasher(messages) == prompt_sha256(messages)
+    assert len({prompt_sha256(m) for m in model.seen}) == len(model.seen) == 11
+
+
 def test_a_query_without_a_spatial_relation_sends_no_geometry():
     """The spatial expert would abstain: it is not asked, and no prompt carries the geometry."""
     model = _Recorder()

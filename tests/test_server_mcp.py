@@ -134,6 +134,35 @@ async def test_find_goal_is_structured_content_under_its_output_schema(apartment
         assert goal.ranking[0].id == goal.instance_id and all(r.score > 0 for r in goal.ranking)
 
 
+async def test_listed_output_schema_accepts_and_refuses_what_the_model_schema_does(apartment_store):
+    """The compact schema listed for find_goal (references inlined, nullable types as type lists,
+    no titles) means the same as pydantic's: on real results and on each of them broken in one
+    place, jsonschema says valid or invalid alike."""
+    from jsonschema.validators import validator_for
+
+    from iesm_agent.server.results import FindGoalResult, output_schema
+
+    service = MapService({"apartment": apartment_store})
+    results = [await service.find_goal(q) for q in ("the red chair in the office", "somewhere to sleep",
+                                                    "a xylophone in the garage")]
+    broken = []
+    for result in results:
+        for field, value in [("instance_id", "48"), ("position", [1.0, "2"]), ("position", None),
+                             ("box", {"center": [1.0, 2.0, 3.0]}), ("box", None), ("label", 3),
+                             ("gate", {"obj": "high"}), ("experts", {"obj": [{"id": 1}]}),
+                             ("ranking", [{"id": 1, "name": "x", "score": 1.0, "box": None}]),
+                             ("ranking", [{"id": 1, "name": "x", "score": 1.0, "box": {"center": [0], "size": [True]}}]),
+                             ("failures", [None]), ("latency_ms", None), ("found", None)]:
+            broken.append({**result, field: value})
+        broken.append({k: v for k, v in result.items() if k != "ranking"})
+    listed, model = output_schema(FindGoalResult), FindGoalResult.model_json_schema()
+    assert "$defs" not in listed and "anyOf" not in json.dumps(listed)
+    listed_ok, model_ok = validator_for(listed)(listed), validator_for(model)(model)
+    verdicts = [(listed_ok.is_valid(r), model_ok.is_valid(r)) for r in results + broken]
+    assert all(a == b for a, b in verdicts)
+    assert all(a for a, _ in verdicts[:3]) and sum(not a for a, _ in verdicts) >= 30
+
+
 @pytest.mark.parametrize("arguments, message", [
     ({"instance_id": 1, "start": "kitchen"}, "bad argument for plan_path: start (input should be a valid tuple)"),
     ({"start": [0.5, 0.5]}, "bad argument for plan_path: instance_id is missing"),

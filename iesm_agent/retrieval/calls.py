@@ -33,6 +33,57 @@ def prompt_sha256(messages: list[Message]) -> str:
     return h.hexdigest()
 
 
+#: where the part of a user message that the prompts of one query share ends (the fenced query)
+SHARED_END = "</query>"
+
+
+class PromptHasher:
+    """`prompt_sha256` for the prompts of one query, which share their system message and the
+    start of their user message (the candidates and the query, up to `SHARED_END`): that part is
+    hashed once and each prompt hashes its own tail from a copy of the hash state. A text's sha256
+    is the same whatever pieces it is fed in, so the hashes are `prompt_sha256`'s; messages of
+    another shape are hashed whole. Hashing six 15 kB prompts whole took about 60 us per query."""
+
+    def __init__(self) -> None:
+        #: (system text, shared start of the user text, hash state after both)
+        self._shared: tuple[str, str, Any] | None = None
+
+    def __call__(self, messages: list[Message]) -> str:
+        if len(messages) != 2 or (messages[0].role, messages[1].role) != ("system", "user"):
+            return prompt_sha256(messages)
+        system, user = messages[0].text(), messages[1].text()
+        cut = user.rfind(SHARED_END)
+        if cut < 0:
+            return prompt_sha256(messages)
+        cut += len(SHARED_END)
+        shared = self._shared
+        if shared is None or shared[0] != system or shared[1] != user[:cut]:
+            h = hashlib.sha256()
+            h.update(b"system\x00" + system.encode() + b"\x01user\x00")
+            h.update(user[:cut].encode())
+            self._shared = shared = (system, user[:cut], h)
+        h = shared[2].copy()
+        h.update(user[cut:].encode())
+        h.update(b"\x01")
+        return h.hexdigest()
+
+
+#: `contract.max_reply_tokens` per reply schema, by identity: the schemas are contract's memoised
+#: objects, the same for every call (walking one took about 4 us); each entry keeps its schema
+_REPLY_BOUNDS: dict[int, tuple[dict[str, Any], int]] = {}
+
+
+def reply_bound(schema: dict[str, Any]) -> int:
+    """`contract.max_reply_tokens(schema)`, memoised by the schema object (do not mutate a schema
+    after a call has used it)."""
+    hit = _REPLY_BOUNDS.get(id(schema))
+    if hit is None or hit[0] is not schema:
+        if len(_REPLY_BOUNDS) >= 256:
+            _REPLY_BOUNDS.clear()
+        hit = _REPLY_BOUNDS[id(schema)] = (schema, contract.max_reply_tokens(schema))
+    return hit[1]
+
+
 @dataclass
 class Reply:
     """A finished call: its trace and the reply text (None when the call raised)."""
@@ -61,6 +112,7 @@ class Session:
     overflowed: bool = False
     #: monotonic time (s) by which every call of this session ends (the query's deadline)
     deadline: float = math.inf
+    prompt_hash: PromptHasher = field(default_factory=PromptHasher)
 
     def render(self, template: str, **variables: Any) -> list[Message]:
         return self.prompts.render(template, **variables)
@@ -73,8 +125,8 @@ class Session:
     async def call(self, name: str, template: str, messages: list[Message],
                    schema: dict[str, Any] | None = None) -> Reply:
         trace = CallTrace(name=name, template=template, template_hash=self._template_hash(template),
-                          prompt_sha256=prompt_sha256(messages),
-                          max_tokens=contract.max_reply_tokens(schema) if schema is not None else None)
+                          prompt_sha256=self.prompt_hash(messages),
+                          max_tokens=reply_bound(schema) if schema is not None else None)
         options = ChatOptions(temperature=0.0, max_tokens=trace.max_tokens,
                               json_schema=schema if self.model.capabilities.json_schema else None)
         if self.dry_run:

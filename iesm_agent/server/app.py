@@ -38,7 +38,7 @@ from pydantic import ValidationError
 from .. import __version__
 from ..errors import IesmError
 from ..store.tools import function_schema
-from .results import FindGoalResult, argument_problem
+from .results import FindGoalResult, argument_problem, output_schema
 from .tools import MapService, validate_arguments
 
 MCP_PATH = "/mcp"
@@ -93,7 +93,7 @@ def _as_mcp_tool(fn: Callable[..., Any]) -> Tool:
     update: dict[str, Any] = {"parameters": spec["parameters"]}
     if output_model is not None:
         update["fn_metadata"] = tool.fn_metadata.model_copy(
-            update={"output_model": output_model, "output_schema": output_model.model_json_schema()})
+            update={"output_model": output_model, "output_schema": output_schema(output_model)})
     return tool.model_copy(update=update)
 
 

@@ -146,7 +146,7 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     lexical = bool(q.targets or q.afford)
     enc = encoder() if encoder is not None else None
     if enc is not None:
-        comp = _with_embeddings(q, comp, enc, records)
+        comp = _with_embeddings(q, comp, enc, block)
     scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
     scores = scores + _TIE_BREAK * comp.sum(axis=1)
     ruled_out = _ruled_out(q, records)
@@ -489,7 +489,7 @@ def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
     return fit
 
 
-def _with_embeddings(q: QueryInfo, comp: np.ndarray, encoder, records: list[Record]) -> np.ndarray:
+def _with_embeddings(q: QueryInfo, comp: np.ndarray, encoder, block: _Block) -> np.ndarray:
     """A copy of `comp` (a `_candidate_matrix`) with its embedding column filled, memoised per
     query, matrix and encoder: the experts of one query that weigh embeddings ask for the same."""
     memo = reading_memo(q)
@@ -498,17 +498,27 @@ def _with_embeddings(q: QueryInfo, comp: np.ndarray, encoder, records: list[Reco
     if hit is not None and hit[0] is comp and hit[1] is encoder:
         return hit[2]
     out = comp.copy()
-    out[:, _EMB] = _embedding_scores(encoder, q.text, records)
+    out[:, _EMB] = _embedding_scores(encoder, q.text, block)
     out.flags.writeable = False
     if len(memo) < 4096:
         memo[key] = (comp, encoder, out)
     return out
 
 
-def _embedding_scores(encoder, query: str, records: list[Record]) -> np.ndarray:
-    vecs = encoder.encode([query, *(r.text or "object" for r in records)])
-    sims = vecs[1:] @ vecs[0]
+def _embedding_scores(encoder, query: str, block: _Block) -> np.ndarray:
+    """(N,) how close `query` is to each candidate's text, from 0 (cosine 0.15 or less) to 1 (0.65)."""
+    sims = _text_vectors(block, encoder) @ encoder.encode([query])[0]
     return np.clip((sims - 0.15) / 0.5, 0.0, 1.0)
+
+
+@lru_cache(maxsize=16)
+def _text_vectors(block: _Block, encoder) -> np.ndarray:
+    """(N, dim) read-only: the encoder's rows for the block's candidate texts, gathered once per
+    block (from the encoder's memo, 57 rows cost about 50 us a query); a query's gate and experts
+    show one block, and on a map whose candidates are all shown every query does."""
+    rows = encoder.encode([r.text or "object" for r in block.records])
+    rows.flags.writeable = False
+    return rows
 
 
 # -- keyword ---------------------------------------------------------------------------------
