@@ -72,6 +72,11 @@ def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sent
     assert ("color", "white") in info.attrs
 
 
+def test_a_sentence_about_the_speakers_own_body_or_things_says_why_not_where():
+    assert analyse_query("My ankles are swollen. I want the ottoman.").targets == {"ottoman": 1.0}
+    assert analyse_query("My shoulders are tense. I'd like one of the footstools.").named
+
+
 def test_what_a_verb_of_making_brings_into_being_is_no_place_to_go():
     info = analyse_query("I'd love to brew a pot of cocoa")
     assert not info.named and info.targets.get("pot", 0.0) < 1.0
