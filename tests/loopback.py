@@ -30,6 +30,7 @@ from typing import Any, Callable, Iterable, Literal, Optional, Union, get_args
 
 from pydantic import ValidationError
 
+from iesm_agent.providers import endpoint
 from iesm_agent.providers.base import ChatOptions, ImagePart, Message, Model, TextPart
 
 Flavour = Literal["openai", "vllm", "lmstudio", "llama-cpp-python", "llama.cpp", "ollama"]
@@ -161,6 +162,11 @@ class LoopbackServer:
         httpd.server_activate()
         self._httpd = httpd
         self._port = httpd.server_address[1]
+        # a new server, even on a port an earlier test's server had: what the process learnt
+        # about that address (dialect, window) is not this server's
+        for key in [k for k in endpoint._FACTS if k[0] == f"http://127.0.0.1:{self._port}" or
+                    k[0].startswith(f"http://127.0.0.1:{self._port}/")]:
+            del endpoint._FACTS[key]
         self._thread = threading.Thread(target=httpd.serve_forever, kwargs={"poll_interval": 0.05},
                                         name="iesm-loopback", daemon=True)
         self._thread.start()
