@@ -84,7 +84,7 @@ def test_what_a_verb_of_making_brings_into_being_is_no_place_to_go():
 
 
 def test_a_landmark_is_no_target_when_the_request_asks_for_a_kind_of_its_own():
-    info = analyse_query("the wastebasket next to the radiator")
+    info = analyse_query("the wastebasket beside the radiator")
     assert info.targets == {"trash can": 1.0} and info.landmarks == {"radiator": 0.35}
     info = analyse_query("a seat near the piano")  # a class noun asks for a kind too
     assert not info.targets and info.landmarks == {"piano": 0.35}

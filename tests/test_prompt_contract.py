@@ -88,7 +88,7 @@ def test_hashing_the_shared_prefix_once_gives_each_prompt_its_whole_hash():
 
     model = _Recorder()
     retriever = Retriever(MapStore(open_map("apartment")), provider=model)
-    retriever.ask("the lamp next to the sofa")
+    retriever.ask("the lamp beside the armchair")
     retriever.ask("somewhere to sleep")
     system, user = model.seen[0]
     other = [[system, Message(role="user", content=user.text().replace("lamp", "lamps", 1))],

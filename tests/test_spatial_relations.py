@@ -425,13 +425,13 @@ def test_the_viewer_stands_in_the_targets_own_room_not_every_room_of_its_type(tm
                box(5, "bed", (10.0, 1.0, 0.3), (1.6, 2.0, 0.6), room="guest bedroom"),
                box(6, "desk", (10.0, 9.0, 0.4), (1.2, 0.6, 0.8), room="guest bedroom")]
     store = make_store(tmp_path, objects)
-    assert spatial(store, "facing the bed, the nightstand on the left")[0] == 2
+    assert spatial(store, "looking at the bed, I want the nightstand to my left")[0] == 2
 
 
 @pytest.mark.parametrize("query, best", [
-    ("seen from the sofa, the lamp on the right", 5),     # the viewer sits on the sofa, looking into the room
-    ("Sitting on the couch, take me to the lamp on my left", 4),
-    ("the lamp on the right as you look from the foot of the sofa", 4),  # at its foot: facing the sofa
+    ("seen from the sofa, the right-hand lamp", 5),       # the viewer sits on the sofa, looking into the room
+    ("Sitting on the couch, which lamp is to my left?", 4),
+    ("the right-hand lamp as you look from the foot of the sofa", 4),  # at its foot: facing the sofa
 ])
 def test_the_viewer_can_sit_or_stand_at_a_landmark(tmp_path, query, best):
     lounge = [box(1, "sofa", (2.0, 0.5, 0.4), (2.0, 0.9, 0.8), room="living room"),

@@ -256,7 +256,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if root.pos_ not in ("VERB", "AUX") and subject is None:
         return "request", _telegraphic_target(root)  # a bare noun phrase: "the kettle on the left", "somewhere to perch"
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
-    if subject is not None and (subject.lower_ in _PERSONAL or any(  # "my soup went cold": about the speaker
+    if subject is not None and (subject.lower_ in _PERSONAL or any(  # "my ankles are sore": about the speaker
             c.dep_ == "poss" and c.lower_ in _PERSONAL for c in subject.children)):
         # "I'm by the piano and I want ...": where the speaker is, not where to go
         found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
