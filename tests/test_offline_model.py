@@ -356,3 +356,13 @@ def test_a_use_is_a_purpose_only_when_the_request_says_it(query, purpose):
 
     q = analyse_query(query)
     assert q.afford and q.purpose is purpose
+
+
+def test_a_landmark_named_in_the_request_is_no_evidence_for_itself(model, lib):
+    # no candidate is a crate: the one whose caption names the radiator is evidence; the radiator
+    # itself, whose own label is the only word it shares with the request, is not ranked at all
+    cands = [{"id": 1, "label": "radiator", "room": "hall", "caption": "a white radiator under the window"},
+             {"id": 2, "label": "trash can", "room": "hall", "caption": "a grey trash can beside the radiator"},
+             {"id": 3, "label": "lamp", "room": "hall", "caption": "a floor lamp"}]
+    for name in ("obj", "desc", "abs", "room"):
+        assert expert_rank(model, lib, name, "the crate next to the radiator", kappa=2, cands=cands) == [2]

@@ -384,11 +384,20 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
         comp[:, _DESC] = [sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
                           for r in block.records]
     if q.overlap:
-        comp[:, _TEXT] = [len(q.overlap & r.stems) / len(q.overlap) for r in block.records]
+        comp[:, _TEXT] = _text_overlap(q, block.records)
     comp.flags.writeable = False  # shared by the query's gate and experts
     if len(memo) < 4096:
         memo[key] = (block, comp)
     return comp
+
+
+def _text_overlap(q: QueryInfo, records: list[Record]) -> list[float]:
+    """Share of the request's content words each candidate's label, caption and tags say; the
+    words naming a landmark do not count for a candidate whose own label says them (a door is not
+    "by the door", a caption naming the door is)."""
+    landmark = frozenset(stem(w) for c in q.landmarks for w in c.split())
+    return [len((q.overlap - landmark if landmark & frozenset(stem(w) for w in r.label.lower().split()) else q.overlap)
+                & r.stems) / len(q.overlap) for r in records]
 
 
 def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], memo: dict) -> float:
