@@ -74,7 +74,7 @@ def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sent
 
 def test_a_sentence_about_the_speakers_own_body_or_things_says_why_not_where():
     assert analyse_query("My ankles are swollen. I want the ottoman.").targets == {"ottoman": 1.0}
-    assert analyse_query("My shoulders are tense. I'd like one of the footstools.").named
+    assert analyse_query("My shoulders are tense. I'd like one of the footstools.").targets == {"stool": 1.0}
 
 
 def test_what_a_verb_of_making_brings_into_being_is_no_place_to_go():

@@ -238,8 +238,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
-    if subject is None and root.pos_ in ("VERB", "AUX") and _noun_of(root) is not None:
-        return "request", _noun_of(root)  # "trash can by the sink": a compound's last noun read as a verb
+    if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
+        return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
     command = _command(doc, sent)
     if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
         found = command[1]
@@ -406,14 +406,16 @@ def _antecedent(doc, index: int) -> int:
         return index
     before = list(reversed(doc[:index]))
     plural = next((t.i for t in before if t.tag_ in ("NNS", "NNPS")), None)  # "of the three pillows, the one ..."
-    if plural is not None or any(doc[index].children):
-        return index if plural is None else plural
+    if plural is not None:
+        return plural
+    if any(doc[index].children):  # "the leather one": of a kind named some other way
+        return index
     return next((t.i for t in before if t.pos_ in NOUNS and t.dep_ in _NAMING), index)  # "I need a stool, find me one"
 
 
 def _partitive(token) -> int | None:
-    """The word after "of" that `token` takes a part of ("one of the benches", "any of them"): a
-    noun or "them"; None when it takes none."""
+    """The word after "of" that `token` takes a part of ("one of the benches", "either of those
+    stools"): a noun or "them"; None when it takes none."""
     of = next((c for c in token.children if c.dep_ == "prep" and c.lower_ == "of"), None)
     return next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
                 None) if of else None

@@ -59,7 +59,7 @@ _STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: verbs of seeing after which "from" says where the viewer is
-_SEEING = frozenset({"seen", "viewed", "looking", "looked", "look", "watching", "facing"})
+_SEEING = frozenset({"seen", "viewed", "looked", "watching"})  # with _LOOKING
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
@@ -355,7 +355,8 @@ class _Reader:
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
-                and not any(self.word(i).text.lower() == "of" for i in range(one + 1, min(one + 2, len(self.toks)))):
+                and not any(self.structure.words[c].text.lower() == "of"  # "one of the plates": the plates
+                            for c in self.structure.children(self.words[one], "prep")):
             rel.landmarks.append(tuple(self.cat_at[self.target_at].values("cat")))
             rel.landmark_attrs.append(self.attrs_before(one))
             self.last_landmark_end = one + 1
@@ -500,9 +501,13 @@ class _Reader:
         if verb not in _STANDING | _SITTING:
             return False
         subjects = st.children(k, "nsubj")
-        opens = k == 0 or st.words[k - 1].text in (",", ".", ";", ":")
         return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
-            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT", "pcomp") and (verb in _STANDING or opens)))
+            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT", "pcomp")
+                               and (verb in _STANDING or self.opens_clause(k))))
+
+    def opens_clause(self, k: int) -> bool:
+        """True when the parsed word `k` opens the request or a clause after punctuation."""
+        return k == 0 or self.structure.words[k - 1].text in (",", ".", ";", ":")
 
     def place_of(self, i: int, kind: str) -> int:
         """"the middle of X", "the corner of X": relative to the object X; the middle one of the
@@ -553,8 +558,7 @@ class _Reader:
         settee", "From the doorway, ..."; not "a pipe runs from the boiler to the sink")."""
         if self.pending_ordinal is None:
             st, k = self.structure, self.cue_word
-            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING
-                                  or k == 0 or st.words[k - 1].text in (",", ".", ";", ":")):
+            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING | _LOOKING or self.opens_clause(k)):
                 self.viewer_landmark(Relation("from"), i)
             return i
         if nxt in ("left", "right"):

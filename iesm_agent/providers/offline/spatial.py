@@ -108,7 +108,8 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
                       np.array([r.box[0] for r, _ in keep], np.float64).reshape(-1, 3),
                       np.array([r.box[1] for r, _ in keep], np.float64).reshape(-1, 3))
     return _Scene(boxes=boxes, concepts=[r.concepts for r, _ in keep], attrs=[r.attrs for r, _ in keep],
-                  rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep], on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
+                  rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep],
+                  on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
                   is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep])
 
 

@@ -396,8 +396,14 @@ def _text_overlap(q: QueryInfo, records: list[Record]) -> list[float]:
     words naming a landmark do not count for a candidate whose own label says them (a door is not
     "by the door", a caption naming the door is)."""
     landmark = frozenset(stem(w) for c in q.landmarks for w in c.split())
-    return [len((q.overlap - landmark if landmark & frozenset(stem(w) for w in r.label.lower().split()) else q.overlap)
-                & r.stems) / len(q.overlap) for r in records]
+    return [len((q.overlap - landmark if landmark & _label_stems(r.label) else q.overlap) & r.stems) / len(q.overlap)
+            for r in records]
+
+
+@lru_cache(maxsize=4096)
+def _label_stems(label: str) -> frozenset[str]:
+    """Stems of a raw label's words (a map's few hundred labels recur in every query)."""
+    return frozenset(stem(w) for w in label.lower().split())
 
 
 def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], memo: dict) -> float:
