@@ -186,3 +186,19 @@ def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
 def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text, kind):
     q = analyse_query(text)
     assert q.targets.get(kind) == 1.0
+
+
+@pytest.mark.parametrize("text, wanted", [
+    ("we would like a glass of lemonade", "lemonade"),
+    ("I need to brew a pot of coffee", "coffee"),
+    ("boil some water for a mug of cocoa", "cocoa"),
+])
+def test_a_vessel_that_counts_out_a_wished_portion_is_not_what_is_asked_for(text, wanted):
+    q = analyse_query(text)
+    assert not {"cup", "bottle", "pot"} & set(q.targets)
+    assert wanted in q.text and "of" not in q.text.split()
+
+
+def test_a_vessel_already_somewhere_is_the_thing_to_go_to():
+    q = analyse_query("somebody put a mug of cocoa on the windowsill; take me to it")
+    assert q.targets.get("cup") == 1.0

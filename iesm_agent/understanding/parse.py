@@ -32,6 +32,9 @@ _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
 #: "make the bed"): what they make is no place to go
 _MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
+#: vessels and measures that only count out what the speaker wants to have ("a cup of tea", "a
+#: plate of food"): in a wish or a making, the content is what is asked for, not the vessel
+_PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
 #: clause relations under which a verb's object can be the request's target
@@ -88,6 +91,7 @@ class Structure:
     context: tuple[tuple[int, int], ...]
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
+    portions: tuple[tuple[int, int], ...] = ()  # character ranges of "cup of" in "I'd love a cup of tea"
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -191,7 +195,24 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    return Structure(words, target, phrase, request, context, _left_place(doc, request, at))
+    portions = tuple((t.idx + at, of.idx + len(of) + at) for t in doc if (of := _wished_portion(t)) is not None)
+    return Structure(words, target, phrase, request, context, _left_place(doc, request, at), portions=portions)
+
+
+def _wished_portion(token):
+    """The "of" after a vessel or measure that counts out what the speaker wants to have or make
+    ("I'd love a cup of tea", "brew a pot of coffee", "water for a cup of coffee"), else None; a
+    vessel that is there already ("someone left a cup of tea") is a thing, not a portion."""
+    if token.lemma_ not in _PORTIONS or token.pos_ not in NOUNS:
+        return None
+    of = next((c for c in token.children if c.dep_ == "prep" and c.lower_ == "of"
+               and any(g.dep_ == "pobj" and g.pos_ in NOUNS for g in c.children)), None)
+    if of is None:
+        return None
+    head = token.head
+    wished = token.dep_ == "dobj" and (_made(token) or any(
+        c.dep_ == "nsubj" and c.lower_ in _PERSONAL for c in head.children))
+    return of if wished or (token.dep_ == "pobj" and head.lower_ == "for") else None
 
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:

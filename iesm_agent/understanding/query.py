@@ -231,6 +231,7 @@ class _Reading:
     spans: list[Span]
     preamble: list[str]
     ruled_out: list["QueryInfo"]
+    portioned: bool = False  # vessels of a wished portion left out of `text` ("a cup of tea": tea)
 
 
 def _read_request(lex: Lexicon, text: str) -> _Reading:
@@ -239,6 +240,11 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     marker read apart and what comes before the request phrase kept as the preamble."""
     corrected = normalise(lex.respell(text))
     structure = parse_request(corrected)
+    portioned = bool(structure.portions)
+    for start, end in reversed(structure.portions):  # "I'd love a cup of tea": the tea is wanted
+        corrected = corrected[:start] + corrected[end:]
+    if portioned:
+        structure = parse_request(corrected)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
     ruled_out = []
@@ -256,7 +262,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
-    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
+    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out, portioned)
 
 
 def parse_queries(texts: list[str]) -> None:
@@ -271,7 +277,7 @@ def analyse_query(text: str) -> QueryInfo:
     after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     reading = _read_request(lex, text)
-    info = _draft(text)
+    info = _draft(reading.text if reading.portioned else text)  # the text the experts weigh as a whole
     for ruled_out in reading.ruled_out:
         info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets) | frozenset(ruled_out.landmarks)
         info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
