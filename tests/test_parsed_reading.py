@@ -132,6 +132,16 @@ def test_a_three_letter_noun_with_a_dropped_or_swapped_letter_is_corrected(typed
     assert load_lexicon().correct(typed) == meant
 
 
+@pytest.mark.parametrize("typed, meant", [("banket", "blanket"), ("canle", "candle")])
+def test_a_letter_left_out_wins_over_a_wrong_letter_in_place(typed, meant):
+    assert load_lexicon().correct(typed) == meant  # not "basket", "cable": one wrong letter each too
+
+
+@pytest.mark.parametrize("typed, meant", [("crpets", "carpets"), ("tolets", "toilets"), ("matres", "matres")])
+def test_a_misspelt_plural_noun_is_read_through_its_singular(typed, meant):
+    assert load_lexicon().correct(typed) == meant  # "matre" is a finish, not a thing: left as typed
+
+
 @pytest.mark.parametrize("word", ["tea", "bin", "pic", "btw", "bbq"])
 def test_short_words_and_abbreviations_are_left_alone(word):
     assert load_lexicon().correct(word) == word

@@ -109,8 +109,10 @@ class Lexicon:
         """`token`, or the lexicon word it misspells:
         one edit away (insertion, deletion, substitution or transposition of neighbours) for words of
         4 to 6 letters, two for longer ones (keeping the first letter), the closest when it is
-        unique, preferring words with the same first letter; a three-letter word only for a dropped
-        or swapped letter. Known words, English words (`english_words.txt`) and shorter or
+        unique, preferring words with the same first letter, then words a slip of typing makes (a
+        letter dropped, doubled or swapped) over a wrong letter in place; a three-letter word only
+        for a dropped or swapped letter; a plural through its singular when that is a misspelt
+        noun ("tolets": toilets). Known words, English words (`english_words.txt`) and shorter or
         non-alphabetic tokens are never changed."""
         if len(token) < 3 or not token.isalpha() or token in self.vocab or token in self.lemmas \
                 or token in _english() or self.lemma(token) in self.vocab:
@@ -119,6 +121,10 @@ class Lexicon:
         if hit is not None:
             return hit
         best = self._short_fix(token) if len(token) == 3 else self.closest(token, self._spelling_targets)
+        if best == token and len(token) >= 5 and token.endswith("s"):
+            one = self.correct(token[:-1])  # a misspelt plural ("tolets"): its singular, made plural
+            if one != token[:-1] and any(kind in ("cat", "room") for kind, _ in self.phrases.get((one,), ())):
+                best = one + ("es" if one.endswith(("s", "x", "ch", "sh")) else "s")
         if len(self._correction_cache) < 100_000:
             self._correction_cache[token] = best
         return best
@@ -144,6 +150,8 @@ class Lexicon:
         same_start = [(w, d) for w, d in found if w[0] == token[0]]
         found = sorted(same_start or found, key=lambda wd: wd[1])
         closest = [w for w, d in found if d == found[0][1]] if found else []
+        typed = [w for w in closest if _slip(token, w)]  # a letter dropped, doubled or swapped before
+        closest = typed or closest                       # one mistyped: "banket" a blanket, not a basket
         # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
         return min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
 
@@ -254,6 +262,17 @@ class Lexicon:
         if kind == "material" and value in self.related_materials.get(query, ()):
             return 0.5
         return 0.0
+
+
+def _slip(typed: str, word: str) -> bool:
+    """True when `typed` is `word` with one letter left out, one letter too many or two neighbours
+    swapped (the slips of typing; a wrong letter in place is not one of them)."""
+    if len(word) == len(typed) + 1:
+        return any(word[:i] + word[i + 1:] == typed for i in range(len(word)))
+    if len(typed) == len(word) + 1:
+        return any(typed[:i] + typed[i + 1:] == word for i in range(len(typed)))
+    return len(word) == len(typed) and any(
+        typed[:i] + typed[i + 1] + typed[i] + typed[i + 2:] == word for i in range(len(typed) - 1))
 
 
 _OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short": "tall"}
