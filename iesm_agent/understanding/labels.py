@@ -144,37 +144,24 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
 
 
 def _record(data: dict) -> Record:
-    label = _as_text(data.get("label"))
+    label, caption, room = (_as_text(data.get(k)) for k in ("label", "caption", "room"))
     concepts = dict(label_concepts(label))
-    label_words = _caption_profile(label)[1]
     alts = data.get("alt_labels")
     # alternative labels are the mapper's runner-up guesses: weak evidence, best first
     for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
         for c, w in label_concepts(_as_text(alt)):
             concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
-    room = room_of(_as_text(data.get("room")))
     lex = load_lexicon()
-    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha())
-    caption = _as_text(data.get("caption"))
-    text_parts = [label, caption]
     tags = data.get("tags")
-    if isinstance(tags, dict):
-        text_parts += [_as_text(v) for v in tags.values()]
-    attrs: set[tuple[str, str]] = set()
-    words: set[str] = set()
-    slots: dict[Slot, None] = {}
-    stems: set[str] = set()
-    for part in text_parts:
-        a, w = _caption_profile(part)
-        attrs |= a
-        words |= w
-        sl, st = text_slots(part)
-        slots.update(dict.fromkeys(sl))
-        stems |= st
-    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
-                  attrs=frozenset(attrs), words=frozenset(words), label_words=label_words,
-                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems),
-                  room_words=room_words)
+    parts = [label, caption] + ([_as_text(v) for v in tags.values()] if isinstance(tags, dict) else [])
+    profiles, slots = [_caption_profile(p) for p in parts], [text_slots(p) for p in parts]
+    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
+                  room=room_of(room), attrs=frozenset().union(*(a for a, _ in profiles)),
+                  words=frozenset().union(*(w for _, w in profiles)), label_words=profiles[0][1],
+                  text=". ".join(p for p in (label, caption) if p),
+                  slots=tuple(dict.fromkeys(s for found, _ in slots for s in found)),
+                  stems=frozenset().union(*(st for _, st in slots)),
+                  room_words=frozenset(lex.lemma(t) for t in lex.tokens(room) if t.isalpha()))
 
 
 def _as_text(value) -> str:

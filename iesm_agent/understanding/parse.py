@@ -118,10 +118,7 @@ class Structure:
 
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""
-        for k, word in enumerate(self.words):
-            if word.start <= offset < word.start + len(word.text):
-                return k
-        return None
+        return next((k for k, w in enumerate(self.words) if w.start <= offset < w.start + len(w.text)), None)
 
 
 #: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
@@ -198,14 +195,9 @@ def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
     """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
     "leave"/"exit", or the noun after "out of" ("take me out of the bathroom"); None when it wants
     out of nothing."""
-    for t in doc:
-        if not request[0] <= t.idx + at < request[1] or t.pos_ not in NOUNS:
-            continue
-        if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
-            return t.i
-        if t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out":
-            return t.i
-    return None
+    return next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
+        t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
+        or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
 
 
 def _stand_in(doc, index: int | None) -> bool:
@@ -269,9 +261,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
-    if subject is not None and _noun_of(subject) is not None and not (placeholder and named is not None):
-        return ("request" if question else "description"), _noun_of(subject)
-    found = named if named is not None else _object_of(doc, root)
+    found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
+    found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in NOUNS), None)
@@ -358,19 +349,16 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             if found is not None:
                 return found
             continue
-        if child.dep_ in ("dobj", "attr", "oprd") and child.lower_ in ("one", "ones"):
-            return child.i
-        if child.dep_ in ("dobj", "attr", "oprd") and _noun_of(child) is not None:
-            return _noun_of(child)
+        found = child.i if child.lower_ in ("one", "ones") else _noun_of(child)
+        if child.dep_ in ("dobj", "attr", "oprd") and found is not None:
+            return found
     for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
-            if obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS):
-                return obj.i
-            if obj is not None and _noun_of(obj) is not None:
-                return _noun_of(obj)
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
-            found = _object_of(doc, clause) if clause is not None else None
+            found = None if obj is None else obj.i if obj.pos_ == "PRON" or obj.lower_ in STAND_INS else _noun_of(obj)
+            if found is None and clause is not None:
+                found = _object_of(doc, clause)
             if found is not None:
                 return found
     for child in verb.children:

@@ -112,11 +112,8 @@ def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[st
 
 def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
     """(start, end) of the first exclusion marker after the first word, or None."""
-    for i in range(1, len(tokens)):
-        for marker in _EXCLUSIONS:
-            if tuple(tokens[i:i + len(marker)]) == marker:
-                return i, i + len(marker)
-    return None
+    return next(((i, i + len(marker)) for i in range(1, len(tokens)) for marker in _EXCLUSIONS
+                 if tuple(tokens[i:i + len(marker)]) == marker), None)
 
 
 class _Token(str):
@@ -363,7 +360,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
             attr_spans.extend(modifier_spans(lex, lemmas, s))
-            _implied_rooms(lex, lemmas[s.start:s.end], info)
+            info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]  # implied: "bath towel"
+                               for kind, v in lex.phrases.get((w,), ()) if kind == "room"})
             continue
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
@@ -490,12 +488,3 @@ def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozens
         if cats and not s.has("gen") and not modifier:
             head = s
     return head
-
-
-def _implied_rooms(lex: Lexicon, words: list[str], info: SimpleNamespace) -> None:
-    for w in words:
-        for kind, value in lex.phrases.get((w,), ()):
-            if kind == "room":
-                info.rooms.setdefault(value, 0.5)
-
-

@@ -15,20 +15,15 @@ from .parse import Word, normalise, parse_request
 from .query import analyse_query
 from .text import clause_breaks, lemmatise
 
-_CUES: dict[tuple[str, ...], str] = {
-    ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
-    ("resting", "on"): "on", ("under",): "under", ("underneath",): "under", ("beneath",): "under",
-    ("below",): "below", ("above",): "above", ("over",): "above", ("next", "to"): "near",
-    ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
-    ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
-    ("closer",): "closest", ("nearer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
-    ("farther",): "farthest", ("further",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
-    ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
-    ("centre",): "middle", ("at",): "near", ("against",): "wall", ("along",): "wall", ("left",): "left",
-    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing", ("face",): "facing",
-    ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
-    ("across", "from"): "opposite", ("across",): "opposite",
-}
+#: relation cues (word sequences, "|" between them) by the relation they name
+_CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in {
+    "on": "on top of|on|atop|onto|sitting on|resting on", "under": "under|underneath|beneath",
+    "below": "below", "above": "above|over", "near": "next to|beside|by|near|close to|adjacent to|at",
+    "closest": "closest|nearest|closer|nearer",
+    "farthest": "farthest|furthest|farther|further|far from|away from", "between": "between",
+    "corner": "corner", "middle": "middle|center|centre", "wall": "against|along", "left": "left",
+    "right": "right", "front": "front", "behind": "behind", "facing": "facing|face|looking at",
+    "from": "from", "with": "with", "opposite": "opposite|across from|across"}.items() for cue in cues.split("|")}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
 #: sides with an axis of their own, whoever looks ("the north side of the desk", "the west one")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
@@ -36,12 +31,12 @@ COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
                 for a in ("north", "south") for b in ("east", "west")})
 _CUES.update({cue: kind for kind in COMPASS for cue in (tuple(kind.split("-")), (kind.replace("-", ""),),
                                                          (kind.replace("-", "") + "ern",))})
-_EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
-             "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
-             "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
-             "higher": "high", "lowest": "low", "lower": "low", "widest": "wide", "wider": "wide",
-             "longest": "wide", "longer": "wide", "upper": "high", "uppermost": "high", "topmost": "high",
-             "lowermost": "low", "bottommost": "low"}
+#: comparative and superlative words by the extreme they rank on
+_EXTREMES = {word: value for value, words in {
+    "large": "largest biggest larger bigger", "small": "smallest smaller tiniest", "tall": "tallest taller",
+    "short": "shortest shorter", "high": "highest higher upper uppermost topmost",
+    "low": "lowest lower lowermost bottommost", "wide": "widest wider longest longer"}.items()
+    for word in words.split()}
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
@@ -157,18 +152,15 @@ class _Reader:
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
         self.out = SpatialQuery()
-        self.used: set[int] = set()
         self.last_landmark_end = -1
         self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
-        self.span_of: dict[int, int | None] = {}  # parsed word -> start of the category span of its first token
-        for i, word in enumerate(self.words):
-            if word is not None and word not in self.span_of:
-                self.span_of[word] = next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
+        #: parsed word -> start of the category span of its first token
+        self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
+                        for i, word in reversed(list(enumerate(self.words))) if word is not None}
         self.target_at = self.parsed_target()
-        if self.target_at is not None:
-            self.used.add(self.target_at)
+        self.used: set[int] = set() if self.target_at is None else {self.target_at}
 
     def word(self, i: int) -> Word:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
@@ -177,7 +169,7 @@ class _Reader:
 
     def span_at(self, word: int | None) -> int | None:
         """Start of the category span that holds the parsed `word`, or None."""
-        return self.span_of.get(word) if word is not None else None
+        return self.span_of.get(word)
 
     def parsed_target(self) -> int | None:
         """Start of the category span of the target noun the parse names; else of the first span
@@ -191,10 +183,9 @@ class _Reader:
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun
         the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
-        cue, st = self.cue_word, self.structure
-        if cue is None:
+        if self.cue_word is None:
             return None
-        cue = self.cue_noun()
+        st, cue = self.structure, self.cue_noun()
         below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)}
         return below if any(st.words[k].pos in ("NOUN", "PROPN", "PRON") for k in below) else None
 
@@ -227,12 +218,10 @@ class _Reader:
         has an "of" ("the right side of the piano", "the left end of a workbench")."""
         k, st = self.cue_noun(), self.structure
         of = next((n for n in st.children(k, "prep") if st.words[n].text.lower() == "of"), None)
-        if of is None:
-            return False
         owner = self.span_at(k)  # "the left stool of the three stools": which of them, not a landmark
-        objects = [self.span_at(n) for n in st.children(of, "pobj")] if of is not None else []
-        return owner is None or not any(j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
-                                        for j in objects)
+        return of is not None and (owner is None or not any(
+            j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
+            for j in map(self.span_at, st.children(of, "pobj"))))
 
     def located_by_pronoun(self) -> int | None:
         """Start of the category span of what the current cue places relative to the target when
@@ -546,11 +535,7 @@ class _Reader:
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
         if not objects & set(self._span_words(j)) and not part:
             return  # "standing at the centre of the hall, ...": no object the cue takes
-        at = tuple(self.cat_at[j].values("cat"))
-        if part:
-            self.out.facing = at
-        else:
-            self.out.viewer_at = at
+        setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
 
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
@@ -577,9 +562,8 @@ class _Reader:
         left on the hook", "what we have left"), not a cue word the tagger merely calls a verb
         ("facing the stove, left jar")."""
         at, st = self.words[i], self.structure
-        if at is None or st.words[at].pos not in ("VERB", "AUX"):
-            return False
-        return any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
+        return at is not None and st.words[at].pos in ("VERB", "AUX") \
+            and any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
@@ -647,9 +631,8 @@ class _Reader:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
         toks, out, taken = self.toks, self.out, self.taken
-        target = self.target_at
-        if target is None:
-            target = next((j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
+        target = self.target_at if self.target_at is not None else next(
+            (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         info = analyse_query(self.text)

@@ -38,15 +38,9 @@ def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
 
 def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
     """Stems of words and of the parts of hyphenated words; imitation words read as "like"."""
-    out: set[str] = set()
     imitation = lex.words["imitation_suffixes"]
-    for w in lemmas:
-        for part in (w, *w.split("-")) if "-" in w else (w,):
-            if part in imitation:
-                part = "like"
-            if len(part) > 2:
-                out.add(stem(part))
-    return out
+    return {stem("like" if part in imitation else part) for w in lemmas for part in (w, *w.split("-"))
+            if part in imitation or len(part) > 2}
 
 
 def stem(word: str) -> str:
