@@ -31,8 +31,9 @@ INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "
 _AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "has", "have", "had", "right", "just",
                           "directly", "usually", "always", "still", "now", "normally", "hung", "sat", "put", "set",
                           "kept", "lay", "laid", "stuck", "stood", "leant"})
-
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
+#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
+SIDE_NOUNS = frozenset({"left", "right", "front"})
 
 
 def _verb_like(word: str) -> bool:
@@ -43,10 +44,6 @@ def _verb_like(word: str) -> bool:
 def clause_final_words(text: str) -> frozenset[str]:
     """Lowercase words that end a clause of `text` (followed by punctuation, a dash or the end)."""
     return frozenset(m.group(1).lower() for m in _CLAUSE_END.finditer(text))
-
-
-#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
-SIDE_NOUNS = frozenset({"left", "right", "front"})
 
 
 def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:

@@ -14,6 +14,7 @@ from .text import Slot, modifier_spans, read_slots, word_stems
 _SECONDARY_WEIGHT = 0.6
 #: weight of a category only an alternative label names (the first; each later one 0.05 less)
 _ALT_WEIGHT = 0.6
+_CHUNK = re.compile(r"[,;:.()/|!?]+")
 
 
 @dataclass(frozen=True)
@@ -88,9 +89,6 @@ def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[s
     lemmas = [lex.lemma(t) for t in lex.tokens(text)]
     attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
     return frozenset(attrs), frozenset(lemmas)
-
-
-_CHUNK = re.compile(r"[,;:.()/|!?]+")
 
 
 @lru_cache(maxsize=65536)

@@ -37,6 +37,14 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
+#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
+_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
+#: shorthand people type ("w/ a lid", "sofa + cushions")
+_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "))
+#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
+_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
+#: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
+_NAMING = ("dobj", "attr", "nsubj", "ROOT")
 
 _lock = threading.Lock()
 _nlp = None
@@ -121,22 +129,12 @@ class Structure:
         return next((k for k, w in enumerate(self.words) if w.start <= offset < w.start + len(w.text)), None)
 
 
-#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
-_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
-#: shorthand people type ("w/ a lid", "sofa + cushions")
-_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "))
-
-
 def normalise(text: str) -> str:
     """`text` with typed shorthand spelt out, so the parser reads it as the words it stands for."""
     text = _ITS.sub(r"\1t's", text)
     for pattern, words in _SHORTHAND:
         text = pattern.sub(words, text)
     return text
-
-
-#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
-_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
 
 
 @lru_cache(maxsize=4096)
@@ -371,10 +369,6 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
             return child.i
     return None
-
-
-#: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
-_NAMING = ("dobj", "attr", "nsubj", "ROOT")
 
 
 def _antecedent(doc, index: int) -> int:

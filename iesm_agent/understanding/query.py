@@ -18,6 +18,26 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase when the target names no known kind
 #: ("somewhere to put my cup on")
 _THEME_WEIGHT = 0.35
+#: word sequences after which the query says what the target is NOT
+_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
+               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
+#: words that introduce a part or feature of the target ("with the red cover")
+_PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
+#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
+_REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
+#: share of the request's function evidence a preamble's function evidence gets
+_PREAMBLE_SCALE = 0.5
+#: the kind of object that is the way out of a room
+WAY_OUT = "door"
+#: share of an affordance weight a kind gets as functional kin of the named category
+_KIN_SCALE = 0.8
+#: a purpose counts as the named category's own when the category is among its first three
+#: typical kinds (weight 1.0, 0.98, 0.96: chair for sitting, not for reaching a high shelf)
+_OWN_PURPOSE = 0.96
+#: of such a purpose, only its most typical kinds (the first six) are kin
+_TYPICAL = 0.9
+#: prepositions that introduce the room an object is in ("the sink in the scullery")
+_PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
 @dataclass(frozen=True, eq=False)
@@ -84,30 +104,12 @@ def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float
         target[concept] = target.get(concept, 0.0) + w * scale
 
 
-#: word sequences after which the query says what the target is NOT
-_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
-               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
-
-
-#: words that introduce a part or feature of the target ("with the red cover")
-_PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
-
-
-#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
-_REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
-#: share of the request's function evidence a preamble's function evidence gets
-_PREAMBLE_SCALE = 0.5
-
-
 def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[str]]:
     """(request, preamble): when a request phrase ("go to", "take me to", "find") starts after at
     least two words, what comes before it only says why ("My feet are cold, take me to a rug")."""
-    for i in range(2, len(tokens) - 1):
-        if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
-            continue  # "to get it dried" is a purpose, not the request
-        if _command_at(lex, tokens, i):
-            return tokens[i:], tokens[:i]
-    return tokens, []
+    start = next((i for i in range(2, len(tokens) - 1) if tokens[i] in MOTION_VERBS | _REQUEST_OPENERS
+                  and tokens[i - 1] != "to" and _command_at(lex, tokens, i)), None)  # not "to get it dried"
+    return (tokens, []) if start is None else (tokens[start:], tokens[:start])
 
 
 def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
@@ -175,15 +177,13 @@ def _adjacent(surface: list[_Token], i: int) -> bool:
 def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
-    about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
-    category before that, its `word` the parse's word for that head (with no head, the parse's
-    target all the same: "the thing", "something")."""
+    about a landmark begins (`clause`); its head is the rightmost category before that, its `word`
+    the parse's word for that head, else the parse's target ("the thing", "something")."""
     bounds = lex.words["boundaries"]
     lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
-    if clause:
-        end = min(end, min(clause))
+    end = min([end, *clause])
     head = _head_span(spans, end, lemmas, lex.words["abstract"])
     if head is None:
         return _Target(0, end, None, reading.structure.target)
@@ -209,17 +209,15 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
         return False
     if owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of the target
         return False
-    via = structure.words[owner.head]
-    if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
-        return False
-    return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
+    via = structure.words[owner.head].text.lower()
+    places = _PLACE_PREPOSITIONS | {"at"} if place_ok else frozenset()
+    return not (owner.dep == "pobj" and (via in _PART_WORDS or via in places))
 
 
 @dataclass
 class _Reading:
-    """The request's words as the span loop reads them: the spelt text, its parse, the surface
-    tokens (with offsets), their lemmas and lexicon spans, what only says why (`preamble`) and
-    the reading of what follows an exclusion marker (`ruled_out`)."""
+    """The request's words as the span loop reads them, with what only says why (`preamble`) and
+    the readings of what follows an exclusion marker (`ruled_out`)."""
 
     text: str
     structure: Structure
@@ -269,9 +267,8 @@ def analyse_query(text: str) -> QueryInfo:
     lex = load_lexicon()
     reading = _read_request(lex, text)
     info = _draft(text)
-    for ruled_out in reading.ruled_out:
-        info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets) | frozenset(ruled_out.landmarks)
-        info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
+    info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
+    info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
     # the target phrase: from the parse when it names a known kind, else from the word order
@@ -295,9 +292,8 @@ def analyse_query(text: str) -> QueryInfo:
         if not info.rooms:
             info.rooms = dict(context.rooms)
             info.room_phrase = context.room_phrase
-    if afford:
-        top = max(afford.values())
-        info.afford = {c: w / top for c, w in afford.items()}
+    top = max(afford.values(), default=1.0)
+    info.afford = {c: w / top for c, w in afford.items()}
     if not _named(info) and _leaves_a_room(reading):
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
@@ -424,17 +420,6 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
             info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
 
 
-#: the kind of object that is the way out of a room
-WAY_OUT = "door"
-#: share of an affordance weight a kind gets as functional kin of the named category
-_KIN_SCALE = 0.8
-#: a purpose counts as the named category's own when the category is among its first three
-#: typical kinds (weight 1.0, 0.98, 0.96: chair for sitting, not for reaching a high shelf)
-_OWN_PURPOSE = 0.96
-#: of such a purpose, only its most typical kinds (the first six) are kin
-_TYPICAL = 0.9
-
-
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
     """Kinds that serve the same purpose as a named category (chair -> sofa, stool, bench): the
     most typical kinds of the affordance entries whose first kinds include it, 0.8 x their weight."""
@@ -445,10 +430,6 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
                 if weight >= _TYPICAL:
                     kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
     return kin
-
-
-#: prepositions that introduce the room an object is in ("the sink in the scullery")
-_PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
 def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop: frozenset[str],

@@ -8,6 +8,8 @@ from dataclasses import dataclass
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
+_CLAUSE_MARK = re.compile(r"[.,;:!?()]")
+
 
 @dataclass(frozen=True)
 class Slot:
@@ -114,9 +116,6 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
             slots.append(Slot("color", lemmas[i], lemmas[i], frozenset()))
             used.update((i, i + 1))
     return slots, used
-
-
-_CLAUSE_MARK = re.compile(r"[.,;:!?()]")
 
 
 def clause_breaks(text: str, tokens: list[tuple[str, int]]) -> frozenset[int]:
