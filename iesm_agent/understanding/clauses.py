@@ -63,9 +63,8 @@ def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int
     while cue_start > 0 and (toks[cue_start - 1] in STRANDABLE or toks[cue_start - 1] in RELATION_NOUNS):
         cue_start -= 1  # the relation's first word: "on top of", "to the left of", "next to"
     before = sorted(s for s, span in categories.items() if span.end <= cue_start)
-    if not before or cue_start - categories[before[-1]].end > MAX_VERB_WORDS:
-        return None
-    last = before[-1]
-    if not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
+    last = before[-1] if before else None
+    if last is None or cue_start - categories[last].end > MAX_VERB_WORDS \
+            or not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
         return None  # "the cushion with the pattern on it": the clause's noun is another word
     return last if len(before) > 1 or TARGET_PRONOUNS.intersection(toks[:last]) else None

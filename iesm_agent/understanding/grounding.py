@@ -26,10 +26,8 @@ _grounded: dict[tuple, QueryInfo] = {}
 
 def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], encoder: Any) -> QueryInfo:
     """`info` with its unknown target phrase read as the map label it misspells, else as the
-    categories of the nearest map label, and its unknown room phrase likewise as a map room
-    (cosine >= MIN_SIMILARITY); `info` itself when there is nothing to ground or nothing near
-    enough (without an encoder only misspellings are grounded). `rooms`/`labels` are
-    the room and label strings present (as the candidates carry them)."""
+    categories of the nearest of `labels` (`_nearest`), and its unknown room phrase likewise as one
+    of `rooms` (the strings the candidates carry); `info` itself when nothing is near enough."""
     if not (info.unknown_target or info.unknown_room):
         return info
     rooms, labels = tuple(sorted(set(rooms))), tuple(sorted(set(labels)))
@@ -44,10 +42,8 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
             overlap = overlap | {stem(w) for w in load_lexicon().tokens(label) if len(w) > 2}
         else:
             label = _nearest(encoder, info.unknown_target, labels)
-        if label is not None:
-            concepts = label_concepts(label)
-            top = concepts[0][1] if concepts else 0.0
-            targets.update({c: 1.0 for c, w in concepts if w >= top})
+        concepts = label_concepts(label) if label is not None else ()
+        targets.update({c: 1.0 for c, w in concepts if w >= concepts[0][1]})
     if info.unknown_room:
         room = _misspelt_label(info.unknown_room, rooms) or _nearest(encoder, info.unknown_room, rooms)
         if room is not None:

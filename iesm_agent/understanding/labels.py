@@ -8,7 +8,7 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, load_lexicon
 from .text import Slot, modifier_spans, read_slots, word_stems
 
 _SECONDARY_WEIGHT = 0.6
@@ -77,8 +77,7 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
     out: dict[str, float] = {}
     for s in spans:
         for c in s.values("cat"):
-            w = 1.0 if s is head else _SECONDARY_WEIGHT
-            out[c] = max(out.get(c, 0.0), w)
+            out[c] = max(out.get(c, 0.0), 1.0 if s is head else _SECONDARY_WEIGHT)
     return out
 
 
@@ -101,12 +100,8 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     for chunk in _CHUNK.split(text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
         stems.update(word_stems(lex, lemmas))
-        spans: list[Span] = []
-        for sp in lex.scan(lemmas):
-            if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds):
-                spans.append(sp)
-            else:
-                spans.extend(modifier_spans(lex, lemmas, sp))
+        spans = [found for sp in lex.scan(lemmas) for found in (
+            [sp] if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds) else modifier_spans(lex, lemmas, sp))]
         slots.extend(read_slots(lex, lemmas, spans)[0])
     return tuple(dict.fromkeys(slots)), frozenset(stems)
 
@@ -116,11 +111,8 @@ def room_of(text: str) -> str | None:
     """Canonical room type of a room label such as 'Living Room 2' or 'office1'."""
     lex = load_lexicon()
     lemmas = [lex.lemma(t.rstrip("0123456789")) for t in lex.tokens(text)]
-    for s in lex.scan([t for t in lemmas if t]):
-        rooms = s.values("room")
-        if rooms:
-            return rooms[0]
-    return text.strip().lower() or None
+    return next((s.values("room")[0] for s in lex.scan([t for t in lemmas if t]) if s.values("room")),
+                text.strip().lower() or None)
 
 
 @lru_cache(maxsize=65536)

@@ -86,8 +86,7 @@ class Structure:
     (None: the parse names none); `phrase` the (first, last) word indices of its noun phrase
     (determiners excluded); `request` the character range of the sentences that make the
     request (the target's sentence and the sentences that continue it); `context` the character
-    ranges of what only says why ("I spilled juice."); `leaving` the word index of a place the
-    request wants out of."""
+    ranges of what only says why ("I spilled juice.")."""
 
     words: tuple[Word, ...]
     target: int | None
@@ -149,9 +148,8 @@ def parse_request(text: str) -> Structure:
 
 
 def parse_many(texts: list[str]) -> None:
-    """Memoise `parse_request` of each of `texts`, parsed together (`nlp.pipe`: about a third of
-    the CPU per sentence of parsing one at a time; the same parse on every suite text,
-    `scripts/check_parse_batching.py`)."""
+    """Memoise `parse_request` of each of `texts`, parsed together (`nlp.pipe`: a third of the CPU per
+    sentence, the same parse on every suite text: `scripts/check_parse_batching.py`)."""
     todo = [t for t in dict.fromkeys(texts) if not _FRONTED_EXCLUSION.match(t)]
     try:
         _batch.update(zip(todo, _pipeline().pipe(todo)))
@@ -191,8 +189,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
     """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
-    "leave"/"exit", or the noun after "out of" ("take me out of the bathroom"); None when it wants
-    out of nothing."""
+    "leave"/"exit" or the noun after "out of" ("take me out of the bathroom"); else None."""
     return next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
@@ -208,8 +205,8 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     names a target; else the first description ("This is a brown chair."); else the last
     statement about the speaker that names one ("I want to dust the frame"); never a sentence that
     continues an earlier one ("It is next to the desk.")."""
-    for kinds, pick in ((("request",), -1), (("description",), 0), (("personal",), -1), (("viewpoint",), 0)):
-        found = [i for i, (kind, target) in enumerate(readings) if kind in kinds and target is not None]
+    for wanted, pick in (("request", -1), ("description", 0), ("personal", -1), ("viewpoint", 0)):
+        found = [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
         if found:
             return found[pick]
     return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
@@ -291,36 +288,26 @@ def _telegraphic_target(root) -> int:
     """The head of a bare noun phrase, or in a telegraphic one whose superlative the parser took
     for a modifier ("stool nearest fridge"), the noun before the superlative."""
     lefts = list(root.lefts)
-    for k, word in enumerate(lefts):
-        if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in NOUNS:
-            return lefts[k - 1].i
-    return root.i
+    return next((lefts[k - 1].i for k in range(1, len(lefts))
+                 if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
 
 
 def _copula_attribute(root) -> int | None:
-    """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
-    left": the copula or one joined to it; "it is the one nearest the oven": the stand-in, for its
-    antecedent), or None."""
+    """The noun the copula `root`, or one joined to it, names ("this is a kettle", "it's on the shelf
+    and is the jar"; "it is the one nearest the oven": the stand-in, for its antecedent), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                  for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
-    """(imperative verb, its target word or None) of the sentence: a base-form verb heading a
-    clause with no subject of its own, or with "you" ("could you take me to ..."); of several,
-    the last one with an object ("go to the bedroom and find the lamp"); None when there is none."""
-    commands = []
-    for t in sent:
-        if _misread_verb(t):
-            commands.append(t)
-        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep") \
-                or t.lemma_ == "be":  # "there are magazines on it" states, it does not ask
-            continue
-        subjects = [c for c in t.children if c.dep_ in ("nsubj", "nsubjpass")]
-        if any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children):
-            continue
-        if not subjects or subjects[0].lower_ == "you":
-            commands.append(t)
+    """(imperative verb, its target word or None) of the sentence: a base-form verb heading a clause
+    with no subject or "you"; of several, the last one with an object ("go to the hall and find the lamp")."""
+    commands = [t for t in sent if _misread_verb(t) or (
+        t.pos_ == "VERB" and t.tag_ in ("VB", "VBP")
+        and t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")
+        and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
+        and not any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children)
+        and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass")), True))]
     if not commands:
         return None
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]
@@ -338,9 +325,8 @@ def _misread_verb(token) -> bool:
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
-    """The target a verb points at: its noun object, the noun after a destination preposition
-    ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
-    dust the frame", "you should pick the footstool"); with `clauses_only`, only the latter."""
+    """The target a verb points at: its noun object, the noun after a destination preposition, or
+    the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
     for child in () if clauses_only else verb.children:
         if child.lower_ == "way":  # "make your way to the ottoman": the way is how, the ottoman is where
             found = _object_of(doc, child)
@@ -365,18 +351,14 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             found = subject if child.dep_ == "ccomp" and subject is not None else _object_of(doc, child)
             if found is not None:  # a clause's noun subject: "show me where the towels are",
                 return found       # "find the stool pushed under the bench" (parsed as a clause)
-    for child in verb.children:
-        if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
-            return child.i
-    return None
+    return next((c.i for c in verb.children if c.dep_ in ("dobj", "attr") and c.pos_ == "PRON"
+                 and c.lower_ not in _PERSONAL), None)
 
 
 def _antecedent(doc, index: int) -> int:
     """The noun a stand-in word points to: "one of the benches" -> benches; "one" -> the last plural
-    noun before it ("of the three pillows, the one in the middle"), else for a bare "one" the last
-    noun named as subject or object ("is there a stool by the desk? find me one"); "it"/"them" -> the first noun
-    named before it as subject or object ("which vase holds tulips? take me to it"); the word
-    itself when there is none."""
+    noun before it, else (a bare "one") the last noun named as subject or object; "it"/"them" -> the
+    first noun named before it as subject or object; the word itself when there is none."""
     named = _partitive(doc[index])
     if named is not None:  # a partitive ("one of the benches"), or of a plural pronoun: what that stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
@@ -406,11 +388,8 @@ def _partitive(token) -> int | None:
 def _noun_phrase(doc, index: int) -> tuple[int, int]:
     """(first, last) word index of the noun phrase headed by `index`: its compounds, adjectives,
     numbers and possessors before it, determiners left out."""
-    head = doc[index]
-    first = index
-    for child in head.lefts:
-        if child.dep_ in ("compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod"):
-            first = min(first, child.left_edge.i)
+    first = min([index] + [c.left_edge.i for c in doc[index].lefts if c.dep_ in (
+        "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
     while first < index and doc[first].dep_ in ("det", "predet", "case", "punct"):
         first += 1
     return first, index

@@ -192,10 +192,9 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
 
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
                     described: frozenset[int], place_ok: bool = False) -> bool:
-    """True when the words of `span` modify a noun other than the target ("beside the tall
-    wardrobe", "the office papers", "hang my wet coat"); a part of the target ("the mug with the
-    blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
-    white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
+    """True when the words of `span` modify a noun other than the target ("beside the tall wardrobe",
+    "hang my wet coat"); a part of the target ("the mug with the blue handle"), the target named again
+    and a predicate ("it is white") stay the target's, and with `place_ok` so does a place phrase.
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
     word = structure.index_at(surface[span.end - 1].at)  # the parse's word under the span's last token
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
@@ -236,9 +235,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     structure = parse_request(corrected)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
-    ruled_out = []
-    if structure.excluded is not None:  # "Not the green kettle: ..."
-        ruled_out.append(analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:])))
+    ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
+        analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
         tokens = tokens[:marker[0]]
@@ -320,10 +318,9 @@ def _named(info) -> bool:
 
 
 def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
-    """True when surface token `index` is a noun the parse puts under the target noun, not the
-    head itself (a modifier, what a modifier's preposition takes: "the red book with gold on the
-    cover"), so a use it hints at describes the thing rather than says what to do; a head noun
-    that is a cue names a class of things (a perch to sit on)."""
+    """True when surface token `index` is a noun the parse puts under the target noun, not the head
+    itself ("the red book with gold on the cover"): a use it hints at describes the thing rather than
+    says what to do (a head noun that is a cue names a class of things: a perch to sit on)."""
     structure = reading.structure
     word = structure.index_at(reading.surface[index].at)
     return (word is not None and target.word is not None and word != target.word
@@ -375,8 +372,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if attr and not s.has("cue") and not in_target and _outside_target(reading.structure, surface, s, target, described):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs = info.attrs + tuple(kv for kv in attr if kv not in info.attrs)
-        if attr:
-            attr_spans.append(s)
+        attr_spans += [s] if attr else []
         if attr and not s.has("cue"):
             continue
         if s.has("cue") and s.start not in clause:
@@ -407,17 +403,14 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
             | lex.words["imitation_suffixes"])
     info.extra = frozenset(t for i, t in enumerate(lemmas)
                            if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
-    words = set(info.extra) | landmark_words
-    for slot in info.slots:
-        words.update(slot.base.split())
+    words = {*info.extra, *landmark_words, *(w for slot in info.slots for w in slot.base.split())}
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
     if not _named(info) and info.generic is None and not info.afford:
         info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
-    if not any(w >= 1.0 for w in info.rooms.values()):
-        place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
-        if place is not None:
-            stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
-            info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
+    place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
+    if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
+        stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
+        info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
@@ -456,9 +449,8 @@ def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals
 
 
 def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
-    """Rightmost specific category span inside the target phrase. A word that is also an
-    attribute and stands before an abstract noun modifies it ("the glass object": glass is the
-    material, not a drinking glass)."""
+    """Rightmost specific category span inside the target phrase; not an attribute word before an
+    abstract noun ("the glass object": glass is the material, not a drinking glass)."""
     head = None
     for s in spans:
         if s.end > end:

@@ -134,20 +134,19 @@ class _Reader:
         lex = self.lex = load_lexicon()
         corrected = normalise(lex.respell(text))
         self.structure = parse_request(corrected)
-        kept = [(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"] or t in ("one",)]
-        kept = _side_words(kept, corrected)
+        kept = _side_words([(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"]
+                            or t == "one"], corrected)
         self.toks = toks = [t for t, _ in kept]
         self.offsets = [at for _, at in kept]
         self.corrected = corrected
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas, clause_breaks(corrected, kept))
-        self.cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
-                       and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
-                                and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
-                       # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
-                       and not (s.end - s.start == 1 and toks[s.start].endswith("ing")
-                                and lemmas[s.start] != toks[s.start])}
+        self.cat_at = {s.start: s for s in spans if s.has("cat") and not (  # "toilet": category and room
+            s.end - s.start == 1 and (  # one word that is a verb here: posture after motion ("go sit")
+                toks[s.start] in POSTURE_VERBS and s.start > 0 and toks[s.start - 1] in MOTION_VERBS
+                # or a participle ("the plant standing by the tv"), not the noun of its lemma
+                or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
@@ -216,9 +215,9 @@ class _Reader:
             for j in map(self.span_of.get, st.children(of, "pobj"))))
 
     def located_by_pronoun(self) -> int | None:
-        """Start of the category span of what the current cue places relative to the target when
-        its object only points back ("there is a hamper [to its left]", "it has a fern [behind
-        it]"): the noun the phrase hangs on, or the subject or object of its verb; else None."""
+        """Start of the category span of what the cue places relative to the target when its object
+        only points back ("there is a hamper [to its left]"): the noun the phrase hangs on, or the
+        subject or object of its verb; else None."""
         below, st = self.cue_object(), self.structure
         if below is None or not any(self.points_back(k) for k in below) \
                 or any(self.span_of.get(k) is not None and not self.points_back(k) for k in below):
@@ -334,18 +333,17 @@ class _Reader:
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
                 and not any(self.structure.words[c].text.lower() == "of"  # "one of the plates": the plates
                             for c in self.structure.children(self.words[one], "prep")):
-            rel.landmarks.append(tuple(self.cat_at[self.target_at].values("cat")))
-            rel.landmark_attrs.append(self.attrs_before(one))
-            self.last_landmark_end = one + 1
-            return True
-        j = self.next_cat(pos)
-        if j is None:
-            return False
-        self.used.add(j)
-        self.taken.setdefault(id(rel), []).append(j)
-        self.last_landmark_end = self.cat_at[j].end
-        rel.landmarks.append(tuple(c for c in self.cat_at[j].values("cat")))
-        rel.landmark_attrs.append(self.attrs_before(j))
+            at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
+        else:
+            at = self.next_cat(pos)
+            if at is None:
+                return False
+            self.used.add(at)
+            self.taken.setdefault(id(rel), []).append(at)
+            end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
+        rel.landmarks.append(tuple(kind))
+        rel.landmark_attrs.append(self.attrs_before(at))
+        self.last_landmark_end = end
         return True
 
     def read(self) -> SpatialQuery:
@@ -369,9 +367,8 @@ class _Reader:
                 i += 1
             else:
                 i = self.cue(i)
-        for k in negated:
-            if k < len(out.relations):
-                out.relations[k].negated = True
+        for rel in (out.relations[k] for k in negated if k < len(out.relations)):
+            rel.negated = True
         return self.target()
 
     def cue(self, i: int) -> int:
@@ -399,9 +396,8 @@ class _Reader:
         return self.relation(end, words, kind)
 
     def inverse(self, i: int, kind: str) -> bool:
-        """A stranded preposition of a relative clause ("the cabinet the printer sits on"): the
-        clause's noun is the landmark and the relation is seen from the target; False when the
-        clause has no such noun."""
+        """A relative clause's stranded preposition ("the cabinet the printer sits on"): its noun is
+        the landmark, the relation seen from the target; False when the clause has no such noun."""
         j = clause_landmark(self.cat_at, self.toks, i)
         owner = next((r for r in self.out.relations if j in self.taken.get(id(r), ())), None)
         if j is None or (j in self.used and (owner is None or owner.kind != "with")):
@@ -515,8 +511,7 @@ class _Reader:
 
     def viewer_landmark(self, rel: Relation, pos: int) -> None:
         """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
-        takes it; in front of it or at its foot or end the viewer looks at it ("from the foot of
-        the bed": facing the bed)."""
+        takes it; at its front, foot or end, as what the viewer faces ("from the foot of the bed")."""
         objects = self.cue_objects()
         if not self.landmark(rel, pos) or self.out.facing:
             return
@@ -543,9 +538,8 @@ class _Reader:
         return i
 
     def said_by_someone(self, i: int) -> bool:
-        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she
-        left on the hook", "what we have left"), not a cue word the tagger merely calls a verb
-        ("facing the stove, left jar")."""
+        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she left
+        on the hook"), not a cue word the tagger merely calls a verb ("facing the stove, left jar")."""
         at, st = self.words[i], self.structure
         return at is not None and st.words[at].pos in ("VERB", "AUX") \
             and any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
@@ -643,8 +637,7 @@ class _Reader:
 
 @lru_cache(maxsize=4096)
 def parse_query(text: str) -> SpatialQuery:
-    """The spatial reading of `text` (no relations when it states none). Memoised: retrieval's
-    choice of experts, the gate's weighing and the spatial expert of one query share it, so no
-    caller may change it."""
+    """The spatial reading of `text` (no relations when it states none). Memoised and shared by
+    retrieval's choice of experts, the gate and the spatial expert: no caller may change it."""
     return _Reader(text).read()
 

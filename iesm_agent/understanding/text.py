@@ -28,14 +28,8 @@ def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
     its form ("the lamp standing on the desk": a verb, so never the category "lamp stand"); a
     gerund after a preposition is read as its verb ("for resting on" -> rest)."""
     bounds = lex.words["boundaries"]
-    out = []
-    for i, token in enumerate(tokens):
-        lemma = lex.lemma(token)
-        if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds \
-                and i > 0 and tokens[i - 1] not in bounds:  # a participle after a noun: "the lamp standing on"
-            lemma = token
-        out.append(lemma)
-    return out
+    return [token if token.endswith("ing") and 0 < i < len(tokens) - 1 and tokens[i + 1] in bounds
+            and tokens[i - 1] not in bounds else lex.lemma(token) for i, token in enumerate(tokens)]
 
 
 def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
@@ -77,12 +71,8 @@ def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
 def modifier_spans(lex: Lexicon, lemmas: list[str], span: Span) -> list[Span]:
     """Attribute words inside a multi-word category phrase, as one-word spans: a modifier there
     is also a description ("mesh chair": mesh; "small table": small)."""
-    out = []
-    for k in range(span.start, span.end) if span.end - span.start > 1 else ():
-        kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
-        if kinds:
-            out.append(Span(k, k + 1, kinds))
-    return out
+    return [Span(k, k + 1, kinds) for k in (range(span.start, span.end) if span.end - span.start > 1 else ())
+            if (kinds := tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS))]
 
 
 def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[list[Slot], set[int]]:
