@@ -50,11 +50,11 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
             found_rooms[room] = 1.0
     grounded = info
     if targets != info.targets or found_rooms != info.rooms or overlap != info.overlap:
-        kin = functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0])
+        named = (targets, overlap) != (info.targets, info.overlap)
         grounded = dataclasses.replace(
-            info, targets=targets, kin=kin, rooms=found_rooms, overlap=overlap,
-            target_phrase=info.target_phrase or (info.unknown_target if (targets, overlap) != (info.targets, info.overlap)
-                                                 else None),
+            info, targets=targets, rooms=found_rooms, overlap=overlap,
+            kin=functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0]),
+            target_phrase=info.target_phrase or (info.unknown_target if named else None),
             room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
     if len(_grounded) >= _CACHE_SIZE:
         _grounded.clear()

@@ -99,10 +99,9 @@ class Structure:
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
         None when it modifies no noun (a predicate: "the rug looks red")."""
+        while self.words[k].dep == "conj" and self.words[k].head != k:
+            k = self.words[k].head  # "the glass and metal frame": as the first conjunct
         word = self.words[k]
-        while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
-            k = word.head
-            word = self.words[k]
         if word.dep not in ("amod", "compound", "nmod", "poss", "nummod") or self.words[word.head].pos not in NOUNS:
             return None
         noun = word.head
@@ -112,12 +111,9 @@ class Structure:
 
     def dominates(self, ancestor: int, k: int) -> bool:
         """True when word `k` lies in the parse subtree of word `ancestor` (itself included)."""
-        while k != ancestor:
-            head = self.words[k].head
-            if head == k:
-                return False
-            k = head
-        return True
+        while k != ancestor and self.words[k].head != k:
+            k = self.words[k].head
+        return k == ancestor
 
     def children(self, k: int, dep: str) -> list[int]:
         """Indices of the words the parse attaches to word `k` with relation `dep`."""
@@ -340,7 +336,8 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
-            found = None if obj is None else obj.i if obj.pos_ == "PRON" or obj.lower_ in STAND_INS else _noun_of(obj)
+            pointer = obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS)  # "to it", "to one"
+            found = obj.i if pointer else None if obj is None else _noun_of(obj)
             if found is None and clause is not None:
                 found = _object_of(doc, clause)
             if found is not None:

@@ -353,8 +353,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
             attr_spans.extend(modifier_spans(lex, lemmas, s))
-            info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]  # implied: "bath towel"
-                               for kind, v in lex.phrases.get((w,), ()) if kind == "room"})
+            info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]
+                               for kind, v in lex.phrases.get((w,), ()) if kind == "room"})  # "bath towel"
             continue
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
@@ -455,9 +455,8 @@ def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozens
     for s in spans:
         if s.end > end:
             break
-        cats = [c for c in s.values("cat") if c not in _UNSPECIFIC]
         modifier = (any(k in ATTRIBUTE_KINDS for k, _ in s.kinds) and s.end < len(lemmas)
                     and lemmas[s.end] in abstract)
-        if cats and not s.has("gen") and not modifier:
+        if set(s.values("cat")) - _UNSPECIFIC and not s.has("gen") and not modifier:
             head = s
     return head
