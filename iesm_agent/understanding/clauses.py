@@ -31,8 +31,9 @@ INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "
 _AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "has", "have", "had", "right", "just",
                           "directly", "usually", "always", "still", "now", "normally", "hung", "sat", "put", "set",
                           "kept", "lay", "laid", "stuck", "stood", "leant"})
-
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
+#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
+SIDE_NOUNS = frozenset({"left", "right", "front"})
 
 
 def _verb_like(word: str) -> bool:
@@ -43,10 +44,6 @@ def _verb_like(word: str) -> bool:
 def clause_final_words(text: str) -> frozenset[str]:
     """Lowercase words that end a clause of `text` (followed by punctuation, a dash or the end)."""
     return frozenset(m.group(1).lower() for m in _CLAUSE_END.finditer(text))
-
-
-#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
-SIDE_NOUNS = frozenset({"left", "right", "front"})
 
 
 def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
@@ -66,9 +63,8 @@ def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int
     while cue_start > 0 and (toks[cue_start - 1] in STRANDABLE or toks[cue_start - 1] in RELATION_NOUNS):
         cue_start -= 1  # the relation's first word: "on top of", "to the left of", "next to"
     before = sorted(s for s, span in categories.items() if span.end <= cue_start)
-    if not before or cue_start - categories[before[-1]].end > MAX_VERB_WORDS:
-        return None
-    last = before[-1]
-    if not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
+    last = before[-1] if before else None
+    if last is None or cue_start - categories[last].end > MAX_VERB_WORDS \
+            or not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
         return None  # "the cushion with the pattern on it": the clause's noun is another word
     return last if len(before) > 1 or TARGET_PRONOUNS.intersection(toks[:last]) else None

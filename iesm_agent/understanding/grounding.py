@@ -26,10 +26,8 @@ _grounded: dict[tuple, QueryInfo] = {}
 
 def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], encoder: Any) -> QueryInfo:
     """`info` with its unknown target phrase read as the map label it misspells, else as the
-    categories of the nearest map label, and its unknown room phrase likewise as a map room
-    (cosine >= MIN_SIMILARITY); `info` itself when there is nothing to ground or nothing near
-    enough (without an encoder only misspellings are grounded). `rooms`/`labels` are
-    the room and label strings present (as the candidates carry them)."""
+    categories of the nearest of `labels` (`_nearest`), and its unknown room phrase likewise as one
+    of `rooms` (the strings the candidates carry); `info` itself when nothing is near enough."""
     if not (info.unknown_target or info.unknown_room):
         return info
     rooms, labels = tuple(sorted(set(rooms))), tuple(sorted(set(labels)))
@@ -44,21 +42,19 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
             overlap = overlap | {stem(w) for w in load_lexicon().tokens(label) if len(w) > 2}
         else:
             label = _nearest(encoder, info.unknown_target, labels)
-        if label is not None:
-            concepts = label_concepts(label)
-            top = concepts[0][1] if concepts else 0.0
-            targets.update({c: 1.0 for c, w in concepts if w >= top})
+        concepts = label_concepts(label) if label is not None else ()
+        targets.update({c: 1.0 for c, w in concepts if w >= concepts[0][1]})
     if info.unknown_room:
         room = _misspelt_label(info.unknown_room, rooms) or _nearest(encoder, info.unknown_room, rooms)
         if room is not None:
             found_rooms[room] = 1.0
     grounded = info
     if targets != info.targets or found_rooms != info.rooms or overlap != info.overlap:
-        kin = functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0])
+        named = (targets, overlap) != (info.targets, info.overlap)
         grounded = dataclasses.replace(
-            info, targets=targets, kin=kin, rooms=found_rooms, overlap=overlap,
-            target_phrase=info.target_phrase or (info.unknown_target if (targets, overlap) != (info.targets, info.overlap)
-                                                 else None),
+            info, targets=targets, rooms=found_rooms, overlap=overlap,
+            kin=functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0]),
+            target_phrase=info.target_phrase or (info.unknown_target if named else None),
             room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
     if len(_grounded) >= _CACHE_SIZE:
         _grounded.clear()

@@ -8,12 +8,13 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, load_lexicon
 from .text import Slot, modifier_spans, read_slots, word_stems
 
 _SECONDARY_WEIGHT = 0.6
 #: weight of a category only an alternative label names (the first; each later one 0.05 less)
 _ALT_WEIGHT = 0.6
+_CHUNK = re.compile(r"[,;:.()/|!?]+")
 
 
 @dataclass(frozen=True)
@@ -76,8 +77,7 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
     out: dict[str, float] = {}
     for s in spans:
         for c in s.values("cat"):
-            w = 1.0 if s is head else _SECONDARY_WEIGHT
-            out[c] = max(out.get(c, 0.0), w)
+            out[c] = max(out.get(c, 0.0), 1.0 if s is head else _SECONDARY_WEIGHT)
     return out
 
 
@@ -90,9 +90,6 @@ def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[s
     return frozenset(attrs), frozenset(lemmas)
 
 
-_CHUNK = re.compile(r"[,;:.()/|!?]+")
-
-
 @lru_cache(maxsize=65536)
 def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     """Attribute slots and word stems of a caption, tag value or label. Punctuation separates
@@ -103,12 +100,8 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     for chunk in _CHUNK.split(text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
         stems.update(word_stems(lex, lemmas))
-        spans: list[Span] = []
-        for sp in lex.scan(lemmas):
-            if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds):
-                spans.append(sp)
-            else:
-                spans.extend(modifier_spans(lex, lemmas, sp))
+        spans = [found for sp in lex.scan(lemmas) for found in (
+            [sp] if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds) else modifier_spans(lex, lemmas, sp))]
         slots.extend(read_slots(lex, lemmas, spans)[0])
     return tuple(dict.fromkeys(slots)), frozenset(stems)
 
@@ -118,11 +111,8 @@ def room_of(text: str) -> str | None:
     """Canonical room type of a room label such as 'Living Room 2' or 'office1'."""
     lex = load_lexicon()
     lemmas = [lex.lemma(t.rstrip("0123456789")) for t in lex.tokens(text)]
-    for s in lex.scan([t for t in lemmas if t]):
-        rooms = s.values("room")
-        if rooms:
-            return rooms[0]
-    return text.strip().lower() or None
+    return next((s.values("room")[0] for s in lex.scan([t for t in lemmas if t]) if s.values("room")),
+                text.strip().lower() or None)
 
 
 @lru_cache(maxsize=65536)
@@ -144,37 +134,24 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
 
 
 def _record(data: dict) -> Record:
-    label = _as_text(data.get("label"))
+    label, caption, room = (_as_text(data.get(k)) for k in ("label", "caption", "room"))
     concepts = dict(label_concepts(label))
-    label_words = _caption_profile(label)[1]
     alts = data.get("alt_labels")
     # alternative labels are the mapper's runner-up guesses: weak evidence, best first
     for rank, alt in enumerate(alts[:6] if isinstance(alts, list) else []):
         for c, w in label_concepts(_as_text(alt)):
             concepts.setdefault(c, (_ALT_WEIGHT - 0.05 * rank) * w)
-    room = room_of(_as_text(data.get("room")))
     lex = load_lexicon()
-    room_words = frozenset(lex.lemma(t) for t in lex.tokens(_as_text(data.get("room"))) if t.isalpha())
-    caption = _as_text(data.get("caption"))
-    text_parts = [label, caption]
     tags = data.get("tags")
-    if isinstance(tags, dict):
-        text_parts += [_as_text(v) for v in tags.values()]
-    attrs: set[tuple[str, str]] = set()
-    words: set[str] = set()
-    slots: dict[Slot, None] = {}
-    stems: set[str] = set()
-    for part in text_parts:
-        a, w = _caption_profile(part)
-        attrs |= a
-        words |= w
-        sl, st = text_slots(part)
-        slots.update(dict.fromkeys(sl))
-        stems |= st
-    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label, room=room,
-                  attrs=frozenset(attrs), words=frozenset(words), label_words=label_words,
-                  text=". ".join(p for p in (label, caption) if p), slots=tuple(slots), stems=frozenset(stems),
-                  room_words=room_words)
+    parts = [label, caption] + ([_as_text(v) for v in tags.values()] if isinstance(tags, dict) else [])
+    profiles, slots = [_caption_profile(p) for p in parts], [text_slots(p) for p in parts]
+    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
+                  room=room_of(room), attrs=frozenset().union(*(a for a, _ in profiles)),
+                  words=frozenset().union(*(w for _, w in profiles)), label_words=profiles[0][1],
+                  text=". ".join(p for p in (label, caption) if p),
+                  slots=tuple(dict.fromkeys(s for found, _ in slots for s in found)),
+                  stems=frozenset().union(*(st for _, st in slots)),
+                  room_words=frozenset(lex.lemma(t) for t in lex.tokens(room) if t.isalpha()))
 
 
 def _as_text(value) -> str:

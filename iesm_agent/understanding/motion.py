@@ -39,23 +39,20 @@ def _verb_before(toks: list[str], i: int) -> int:
     j = i - 1
     while j >= 0 and (toks[j] in MOTION_OBJECTS or toks[j] in POSTURE_VERBS) and i - j <= 3:
         j -= 1
-    if j < 0 or toks[j] not in MOTION_VERBS:
-        return -1
-    return j if j == 0 or toks[j - 1] in VERB_OPENERS or toks[j - 1] in MOTION_VERBS else -1
+    opened = j == 0 or j > 0 and (toks[j - 1] in VERB_OPENERS or toks[j - 1] in MOTION_VERBS)
+    return j if j >= 0 and toks[j] in MOTION_VERBS and opened else -1
 
 
 def is_destination(toks: list[str], i: int, n: int) -> bool:
     """True when toks[i:i+n] is a particle or preposition of motion: right after a verb of motion
     (and its object), or a path particle followed by a destination preposition ("over to the sofa")."""
-    if toks[i] in PATH_PARTICLES and i + n < len(toks) and toks[i + n] in DESTINATION_PREPS:
-        return True
-    return _verb_before(toks, i) >= 0 and toks[i] in PARTICLES | DESTINATION_PREPS
+    return (toks[i] in PATH_PARTICLES and i + n < len(toks) and toks[i + n] in DESTINATION_PREPS
+            or _verb_before(toks, i) >= 0 and toks[i] in PARTICLES | DESTINATION_PREPS)
 
 
 def strip_motion(toks: list[str]) -> list[str]:
     """`toks` without the motion phrases that only say where to go: a motion verb with its object,
-    a chained posture verb, its particle and destination preposition ("make your way over to",
-    "go sit by", "pop round to"); a verb without a particle or preposition after it stays."""
+    a chained posture verb, its particle and destination preposition ("make your way over to")."""
     drop: set[int] = set()
     for i in range(len(toks)):
         if i not in drop and is_destination(toks, i, 1):

@@ -40,6 +40,14 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
+#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
+_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
+#: shorthand people type ("w/ a lid", "sofa + cushions")
+_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "))
+#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
+_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
+#: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
+_NAMING = ("dobj", "attr", "nsubj", "ROOT")
 
 _lock = threading.Lock()
 _nlp = None
@@ -81,8 +89,7 @@ class Structure:
     (None: the parse names none); `phrase` the (first, last) word indices of its noun phrase
     (determiners excluded); `request` the character range of the sentences that make the
     request (the target's sentence and the sentences that continue it); `context` the character
-    ranges of what only says why ("I spilled juice."); `leaving` the word index of a place the
-    request wants out of."""
+    ranges of what only says why ("I spilled juice.")."""
 
     words: tuple[Word, ...]
     target: int | None
@@ -96,10 +103,9 @@ class Structure:
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
         None when it modifies no noun (a predicate: "the rug looks red")."""
+        while self.words[k].dep == "conj" and self.words[k].head != k:
+            k = self.words[k].head  # "the glass and metal frame": as the first conjunct
         word = self.words[k]
-        while word.dep == "conj" and word.head != k:  # "the glass and metal frame": as the first conjunct
-            k = word.head
-            word = self.words[k]
         if word.dep not in ("amod", "compound", "nmod", "poss", "nummod") or self.words[word.head].pos not in NOUNS:
             return None
         noun = word.head
@@ -109,12 +115,9 @@ class Structure:
 
     def dominates(self, ancestor: int, k: int) -> bool:
         """True when word `k` lies in the parse subtree of word `ancestor` (itself included)."""
-        while k != ancestor:
-            head = self.words[k].head
-            if head == k:
-                return False
-            k = head
-        return True
+        while k != ancestor and self.words[k].head != k:
+            k = self.words[k].head
+        return k == ancestor
 
     def children(self, k: int, dep: str) -> list[int]:
         """Indices of the words the parse attaches to word `k` with relation `dep`."""
@@ -122,16 +125,7 @@ class Structure:
 
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""
-        for k, word in enumerate(self.words):
-            if word.start <= offset < word.start + len(word.text):
-                return k
-        return None
-
-
-#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
-_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
-#: shorthand people type ("w/ a lid", "sofa + cushions")
-_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "))
+        return next((k for k, w in enumerate(self.words) if w.start <= offset < w.start + len(w.text)), None)
 
 
 def normalise(text: str) -> str:
@@ -140,10 +134,6 @@ def normalise(text: str) -> str:
     for pattern, words in _SHORTHAND:
         text = pattern.sub(words, text)
     return text
-
-
-#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
-_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
 
 
 @lru_cache(maxsize=4096)
@@ -158,9 +148,8 @@ def parse_request(text: str) -> Structure:
 
 
 def parse_many(texts: list[str]) -> None:
-    """Memoise `parse_request` of each of `texts`, parsed together (`nlp.pipe`: about a third of
-    the CPU per sentence of parsing one at a time; the same parse on every suite text,
-    `scripts/check_parse_batching.py`)."""
+    """Memoise `parse_request` of each of `texts`, parsed together (`nlp.pipe`: a third of the CPU per
+    sentence, the same parse on every suite text: `scripts/check_parse_batching.py`)."""
     todo = [t for t in dict.fromkeys(texts) if not _FRONTED_EXCLUSION.match(t)]
     try:
         _batch.update(zip(todo, _pipeline().pipe(todo)))
@@ -217,16 +206,10 @@ def _wished_portion(token):
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
     """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
-    "leave"/"exit", or the noun after "out of" ("take me out of the bathroom"); None when it wants
-    out of nothing."""
-    for t in doc:
-        if not request[0] <= t.idx + at < request[1] or t.pos_ not in NOUNS:
-            continue
-        if t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit"):
-            return t.i
-        if t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out":
-            return t.i
-    return None
+    "leave"/"exit" or the noun after "out of" ("take me out of the bathroom"); else None."""
+    return next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
+        t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
+        or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
 
 
 def _stand_in(doc, index: int | None) -> bool:
@@ -239,8 +222,8 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     names a target; else the first description ("This is a brown chair."); else the last
     statement about the speaker that names one ("I want to dust the frame"); never a sentence that
     continues an earlier one ("It is next to the desk.")."""
-    for kinds, pick in ((("request",), -1), (("description",), 0), (("personal",), -1), (("viewpoint",), 0)):
-        found = [i for i, (kind, target) in enumerate(readings) if kind in kinds and target is not None]
+    for wanted, pick in (("request", -1), ("description", 0), ("personal", -1), ("viewpoint", 0)):
+        found = [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
         if found:
             return found[pick]
     return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
@@ -290,9 +273,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
-    if subject is not None and _noun_of(subject) is not None and not (placeholder and named is not None):
-        return ("request" if question else "description"), _noun_of(subject)
-    found = named if named is not None else _object_of(doc, root)
+    found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
+    found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in NOUNS), None)
@@ -323,36 +305,26 @@ def _telegraphic_target(root) -> int:
     """The head of a bare noun phrase, or in a telegraphic one whose superlative the parser took
     for a modifier ("stool nearest fridge"), the noun before the superlative."""
     lefts = list(root.lefts)
-    for k, word in enumerate(lefts):
-        if word.tag_ in ("JJS", "RBS") and k > 0 and lefts[k - 1].pos_ in NOUNS:
-            return lefts[k - 1].i
-    return root.i
+    return next((lefts[k - 1].i for k in range(1, len(lefts))
+                 if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
 
 
 def _copula_attribute(root) -> int | None:
-    """The noun a copula names ("this is a kettle", "it's on the shelf and is the jar on the
-    left": the copula or one joined to it; "it is the one nearest the oven": the stand-in, for its
-    antecedent), or None."""
+    """The noun the copula `root`, or one joined to it, names ("this is a kettle", "it's on the shelf
+    and is the jar"; "it is the one nearest the oven": the stand-in, for its antecedent), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                  for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
-    """(imperative verb, its target word or None) of the sentence: a base-form verb heading a
-    clause with no subject of its own, or with "you" ("could you take me to ..."); of several,
-    the last one with an object ("go to the bedroom and find the lamp"); None when there is none."""
-    commands = []
-    for t in sent:
-        if _misread_verb(t):
-            commands.append(t)
-        if t.pos_ != "VERB" or t.tag_ not in ("VB", "VBP") or t.dep_ not in ("ROOT", "ccomp", "conj", "parataxis", "dep") \
-                or t.lemma_ == "be":  # "there are magazines on it" states, it does not ask
-            continue
-        subjects = [c for c in t.children if c.dep_ in ("nsubj", "nsubjpass")]
-        if any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children):
-            continue
-        if not subjects or subjects[0].lower_ == "you":
-            commands.append(t)
+    """(imperative verb, its target word or None) of the sentence: a base-form verb heading a clause
+    with no subject or "you"; of several, the last one with an object ("go to the hall and find the lamp")."""
+    commands = [t for t in sent if _misread_verb(t) or (
+        t.pos_ == "VERB" and t.tag_ in ("VB", "VBP")
+        and t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")
+        and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
+        and not any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children)
+        and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass")), True))]
     if not commands:
         return None
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]
@@ -370,28 +342,25 @@ def _misread_verb(token) -> bool:
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
-    """The target a verb points at: its noun object, the noun after a destination preposition
-    ("bring me to the armchair"), or, through a clause it governs, that clause's target ("I want to
-    dust the frame", "you should pick the footstool"); with `clauses_only`, only the latter."""
+    """The target a verb points at: its noun object, the noun after a destination preposition, or
+    the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
     for child in () if clauses_only else verb.children:
         if child.lower_ == "way":  # "make your way to the ottoman": the way is how, the ottoman is where
             found = _object_of(doc, child)
             if found is not None:
                 return found
             continue
-        if child.dep_ in ("dobj", "attr", "oprd") and child.lower_ in ("one", "ones"):
-            return child.i
-        if child.dep_ in ("dobj", "attr", "oprd") and _noun_of(child) is not None:
-            return _noun_of(child)
+        found = child.i if child.lower_ in ("one", "ones") else _noun_of(child)
+        if child.dep_ in ("dobj", "attr", "oprd") and found is not None:
+            return found
     for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
-            if obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS):
-                return obj.i
-            if obj is not None and _noun_of(obj) is not None:
-                return _noun_of(obj)
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"
-            found = _object_of(doc, clause) if clause is not None else None
+            pointer = obj is not None and (obj.pos_ == "PRON" or obj.lower_ in STAND_INS)  # "to it", "to one"
+            found = obj.i if pointer else None if obj is None else _noun_of(obj)
+            if found is None and clause is not None:
+                found = _object_of(doc, clause)
             if found is not None:
                 return found
     for child in verb.children:
@@ -400,22 +369,14 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             found = subject if child.dep_ == "ccomp" and subject is not None else _object_of(doc, child)
             if found is not None:  # a clause's noun subject: "show me where the towels are",
                 return found       # "find the stool pushed under the bench" (parsed as a clause)
-    for child in verb.children:
-        if child.dep_ in ("dobj", "attr") and child.pos_ == "PRON" and child.lower_ not in _PERSONAL:
-            return child.i
-    return None
-
-
-#: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
-_NAMING = ("dobj", "attr", "nsubj", "ROOT")
+    return next((c.i for c in verb.children if c.dep_ in ("dobj", "attr") and c.pos_ == "PRON"
+                 and c.lower_ not in _PERSONAL), None)
 
 
 def _antecedent(doc, index: int) -> int:
     """The noun a stand-in word points to: "one of the benches" -> benches; "one" -> the last plural
-    noun before it ("of the three pillows, the one in the middle"), else for a bare "one" the last
-    noun named as subject or object ("is there a stool by the desk? find me one"); "it"/"them" -> the first noun
-    named before it as subject or object ("which vase holds tulips? take me to it"); the word
-    itself when there is none."""
+    noun before it, else (a bare "one") the last noun named as subject or object; "it"/"them" -> the
+    first noun named before it as subject or object; the word itself when there is none."""
     named = _partitive(doc[index])
     if named is not None:  # a partitive ("one of the benches"), or of a plural pronoun: what that stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
@@ -445,11 +406,8 @@ def _partitive(token) -> int | None:
 def _noun_phrase(doc, index: int) -> tuple[int, int]:
     """(first, last) word index of the noun phrase headed by `index`: its compounds, adjectives,
     numbers and possessors before it, determiners left out."""
-    head = doc[index]
-    first = index
-    for child in head.lefts:
-        if child.dep_ in ("compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod"):
-            first = min(first, child.left_edge.i)
+    first = min([index] + [c.left_edge.i for c in doc[index].lefts if c.dep_ in (
+        "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
     while first < index and doc[first].dep_ in ("det", "predet", "case", "punct"):
         first += 1
     return first, index

@@ -18,6 +18,26 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase when the target names no known kind
 #: ("somewhere to put my cup on")
 _THEME_WEIGHT = 0.35
+#: word sequences after which the query says what the target is NOT
+_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
+               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
+#: words that introduce a part or feature of the target ("with the red cover")
+_PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
+#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
+_REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
+#: share of the request's function evidence a preamble's function evidence gets
+_PREAMBLE_SCALE = 0.5
+#: the kind of object that is the way out of a room
+WAY_OUT = "door"
+#: share of an affordance weight a kind gets as functional kin of the named category
+_KIN_SCALE = 0.8
+#: a purpose counts as the named category's own when the category is among its first three
+#: typical kinds (weight 1.0, 0.98, 0.96: chair for sitting, not for reaching a high shelf)
+_OWN_PURPOSE = 0.96
+#: of such a purpose, only its most typical kinds (the first six) are kin
+_TYPICAL = 0.9
+#: prepositions that introduce the room an object is in ("the sink in the scullery")
+_PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
 @dataclass(frozen=True, eq=False)
@@ -84,39 +104,18 @@ def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float
         target[concept] = target.get(concept, 0.0) + w * scale
 
 
-#: word sequences after which the query says what the target is NOT
-_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
-               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
-
-
-#: words that introduce a part or feature of the target ("with the red cover")
-_PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
-
-
-#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
-_REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
-#: share of the request's function evidence a preamble's function evidence gets
-_PREAMBLE_SCALE = 0.5
-
-
 def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[str]]:
     """(request, preamble): when a request phrase ("go to", "take me to", "find") starts after at
     least two words, what comes before it only says why ("My feet are cold, take me to a rug")."""
-    for i in range(2, len(tokens) - 1):
-        if tokens[i] not in MOTION_VERBS and tokens[i] not in _REQUEST_OPENERS or tokens[i - 1] == "to":
-            continue  # "to get it dried" is a purpose, not the request
-        if _command_at(lex, tokens, i):
-            return tokens[i:], tokens[:i]
-    return tokens, []
+    start = next((i for i in range(2, len(tokens) - 1) if tokens[i] in MOTION_VERBS | _REQUEST_OPENERS
+                  and tokens[i - 1] != "to" and _command_at(lex, tokens, i)), None)  # not "to get it dried"
+    return (tokens, []) if start is None else (tokens[start:], tokens[:start])
 
 
 def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
     """(start, end) of the first exclusion marker after the first word, or None."""
-    for i in range(1, len(tokens)):
-        for marker in _EXCLUSIONS:
-            if tuple(tokens[i:i + len(marker)]) == marker:
-                return i, i + len(marker)
-    return None
+    return next(((i, i + len(marker)) for i in range(1, len(tokens)) for marker in _EXCLUSIONS
+                 if tuple(tokens[i:i + len(marker)]) == marker), None)
 
 
 class _Token(str):
@@ -178,15 +177,13 @@ def _adjacent(surface: list[_Token], i: int) -> bool:
 def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
-    about a landmark begins ("the cabinet the printer sits on"); its head is the rightmost
-    category before that, its `word` the parse's word for that head (with no head, the parse's
-    target all the same: "the thing", "something")."""
+    about a landmark begins (`clause`); its head is the rightmost category before that, its `word`
+    the parse's word for that head, else the parse's target ("the thing", "something")."""
     bounds = lex.words["boundaries"]
     lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
-    if clause:
-        end = min(end, min(clause))
+    end = min([end, *clause])
     head = _head_span(spans, end, lemmas, lex.words["abstract"])
     if head is None:
         return _Target(0, end, None, reading.structure.target)
@@ -195,10 +192,9 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
 
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
                     described: frozenset[int], place_ok: bool = False) -> bool:
-    """True when the words of `span` modify a noun other than the target ("beside the tall
-    wardrobe", "the office papers", "hang my wet coat"); a part of the target ("the mug with the
-    blue handle"), the target named again ("the dresser is a dark box") and a predicate ("it is
-    white") stay the target's, and with `place_ok` so does a place phrase ("in the bathroom area").
+    """True when the words of `span` modify a noun other than the target ("beside the tall wardrobe",
+    "hang my wet coat"); a part of the target ("the mug with the blue handle"), the target named again
+    and a predicate ("it is white") stay the target's, and with `place_ok` so does a place phrase.
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
     word = structure.index_at(surface[span.end - 1].at)  # the parse's word under the span's last token
     if word is not None and word != target.word and structure.words[word].dep in ("dobj", "nsubj", "nsubjpass") \
@@ -212,17 +208,15 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
         return False
     if owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of the target
         return False
-    via = structure.words[owner.head]
-    if place_ok and owner.dep == "pobj" and via.text.lower() in _PLACE_PREPOSITIONS | {"at"}:
-        return False
-    return not (owner.dep == "pobj" and via.text.lower() in _PART_WORDS)
+    via = structure.words[owner.head].text.lower()
+    places = _PLACE_PREPOSITIONS | {"at"} if place_ok else frozenset()
+    return not (owner.dep == "pobj" and (via in _PART_WORDS or via in places))
 
 
 @dataclass
 class _Reading:
-    """The request's words as the span loop reads them: the spelt text, its parse, the surface
-    tokens (with offsets), their lemmas and lexicon spans, what only says why (`preamble`) and
-    the reading of what follows an exclusion marker (`ruled_out`)."""
+    """The request's words as the span loop reads them, with what only says why (`preamble`) and
+    the readings of what follows an exclusion marker (`ruled_out`)."""
 
     text: str
     structure: Structure
@@ -247,9 +241,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
         structure = parse_request(corrected)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
-    ruled_out = []
-    if structure.excluded is not None:  # "Not the green kettle: ..."
-        ruled_out.append(analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:])))
+    ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
+        analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
         tokens = tokens[:marker[0]]
@@ -278,9 +271,8 @@ def analyse_query(text: str) -> QueryInfo:
     lex = load_lexicon()
     reading = _read_request(lex, text)
     info = _draft(reading.text if reading.portioned else text)  # the text the experts weigh as a whole
-    for ruled_out in reading.ruled_out:
-        info.excluded_targets = info.excluded_targets | frozenset(ruled_out.targets) | frozenset(ruled_out.landmarks)
-        info.excluded_attrs = info.excluded_attrs | frozenset(ruled_out.attrs)
+    info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
+    info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
     clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
     # the target phrase: from the parse when it names a known kind, else from the word order
@@ -304,9 +296,8 @@ def analyse_query(text: str) -> QueryInfo:
         if not info.rooms:
             info.rooms = dict(context.rooms)
             info.room_phrase = context.room_phrase
-    if afford:
-        top = max(afford.values())
-        info.afford = {c: w / top for c, w in afford.items()}
+    top = max(afford.values(), default=1.0)
+    info.afford = {c: w / top for c, w in afford.items()}
     if not _named(info) and _leaves_a_room(reading):
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
@@ -333,10 +324,9 @@ def _named(info) -> bool:
 
 
 def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
-    """True when surface token `index` is a noun the parse puts under the target noun, not the
-    head itself (a modifier, what a modifier's preposition takes: "the red book with gold on the
-    cover"), so a use it hints at describes the thing rather than says what to do; a head noun
-    that is a cue names a class of things (a perch to sit on)."""
+    """True when surface token `index` is a noun the parse puts under the target noun, not the head
+    itself ("the red book with gold on the cover"): a use it hints at describes the thing rather than
+    says what to do (a head noun that is a cue names a class of things: a perch to sit on)."""
     structure = reading.structure
     word = structure.index_at(reading.surface[index].at)
     return (word is not None and target.word is not None and word != target.word
@@ -369,7 +359,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
             attr_spans.extend(modifier_spans(lex, lemmas, s))
-            _implied_rooms(lex, lemmas[s.start:s.end], info)
+            info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]
+                               for kind, v in lex.phrases.get((w,), ()) if kind == "room"})  # "bath towel"
             continue
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
@@ -387,8 +378,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if attr and not s.has("cue") and not in_target and _outside_target(reading.structure, surface, s, target, described):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs = info.attrs + tuple(kv for kv in attr if kv not in info.attrs)
-        if attr:
-            attr_spans.append(s)
+        attr_spans += [s] if attr else []
         if attr and not s.has("cue"):
             continue
         if s.has("cue") and s.start not in clause:
@@ -419,28 +409,14 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
             | lex.words["imitation_suffixes"])
     info.extra = frozenset(t for i, t in enumerate(lemmas)
                            if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
-    words = set(info.extra) | landmark_words
-    for slot in info.slots:
-        words.update(slot.base.split())
+    words = {*info.extra, *landmark_words, *(w for slot in info.slots for w in slot.base.split())}
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
     if not _named(info) and info.generic is None and not info.afford:
         info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
-    if not any(w >= 1.0 for w in info.rooms.values()):
-        place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
-        if place is not None:
-            stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
-            info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
-
-
-#: the kind of object that is the way out of a room
-WAY_OUT = "door"
-#: share of an affordance weight a kind gets as functional kin of the named category
-_KIN_SCALE = 0.8
-#: a purpose counts as the named category's own when the category is among its first three
-#: typical kinds (weight 1.0, 0.98, 0.96: chair for sitting, not for reaching a high shelf)
-_OWN_PURPOSE = 0.96
-#: of such a purpose, only its most typical kinds (the first six) are kin
-_TYPICAL = 0.9
+    place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
+    if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
+        stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
+        info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
@@ -453,10 +429,6 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
                 if weight >= _TYPICAL:
                     kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
     return kin
-
-
-#: prepositions that introduce the room an object is in ("the sink in the scullery")
-_PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
 def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop: frozenset[str],
@@ -483,25 +455,14 @@ def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals
 
 
 def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
-    """Rightmost specific category span inside the target phrase. A word that is also an
-    attribute and stands before an abstract noun modifies it ("the glass object": glass is the
-    material, not a drinking glass)."""
+    """Rightmost specific category span inside the target phrase; not an attribute word before an
+    abstract noun ("the glass object": glass is the material, not a drinking glass)."""
     head = None
     for s in spans:
         if s.end > end:
             break
-        cats = [c for c in s.values("cat") if c not in _UNSPECIFIC]
         modifier = (any(k in ATTRIBUTE_KINDS for k, _ in s.kinds) and s.end < len(lemmas)
                     and lemmas[s.end] in abstract)
-        if cats and not s.has("gen") and not modifier:
+        if set(s.values("cat")) - _UNSPECIFIC and not s.has("gen") and not modifier:
             head = s
     return head
-
-
-def _implied_rooms(lex: Lexicon, words: list[str], info: SimpleNamespace) -> None:
-    for w in words:
-        for kind, value in lex.phrases.get((w,), ()):
-            if kind == "room":
-                info.rooms.setdefault(value, 0.5)
-
-

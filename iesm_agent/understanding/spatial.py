@@ -15,20 +15,16 @@ from .parse import Word, normalise, parse_request
 from .query import analyse_query
 from .text import clause_breaks, lemmatise
 
-_CUES: dict[tuple[str, ...], str] = {
-    ("on", "top", "of"): "on", ("on",): "on", ("atop",): "on", ("onto",): "on", ("sitting", "on"): "on",
-    ("resting", "on"): "on", ("under",): "under", ("underneath",): "under", ("beneath",): "under",
-    ("below",): "below", ("above",): "above", ("over",): "above", ("next", "to"): "near",
-    ("beside",): "near", ("by",): "near", ("near",): "near", ("close", "to"): "near",
-    ("adjacent", "to"): "near", ("closest",): "closest", ("nearest",): "closest",
-    ("closer",): "closest", ("nearer",): "closest", ("farthest",): "farthest", ("furthest",): "farthest",
-    ("farther",): "farthest", ("further",): "farthest", ("far", "from"): "farthest", ("away", "from"): "farthest",
-    ("between",): "between", ("corner",): "corner", ("middle",): "middle", ("center",): "middle",
-    ("centre",): "middle", ("at",): "near", ("against",): "wall", ("along",): "wall", ("left",): "left",
-    ("right",): "right", ("front",): "front", ("behind",): "behind", ("facing",): "facing", ("face",): "facing",
-    ("looking", "at"): "facing", ("from",): "from", ("with",): "with", ("opposite",): "opposite",
-    ("across", "from"): "opposite", ("across",): "opposite",
-}
+#: relation cues (word sequences, "|" between them) by the relation they name
+_CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in {
+    "on": "on top of|on|atop|onto|sitting on|resting on", "under": "under|underneath|beneath",
+    "below": "below", "above": "above|over", "near": "next to|beside|by|near|close to|adjacent to|at",
+    "closest": "closest|nearest|closer|nearer",
+    "farthest": "farthest|furthest|farther|further|far from|away from", "between": "between",
+    "corner": "corner", "middle": "middle|center|centre", "wall": "against|along", "left": "left",
+    "right": "right", "front": "front", "behind": "behind", "facing": "facing|face|looking at",
+    "from": "from", "with": "with", "opposite": "opposite|across from|across"}.items()
+    for cue in cues.split("|")}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
 #: sides with an axis of their own, whoever looks ("the north side of the desk", "the west one")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
@@ -36,12 +32,12 @@ COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
                 for a in ("north", "south") for b in ("east", "west")})
 _CUES.update({cue: kind for kind in COMPASS for cue in (tuple(kind.split("-")), (kind.replace("-", ""),),
                                                          (kind.replace("-", "") + "ern",))})
-_EXTREMES = {"largest": "large", "biggest": "large", "larger": "large", "bigger": "large",
-             "smallest": "small", "smaller": "small", "tiniest": "small", "tallest": "tall",
-             "taller": "tall", "shortest": "short", "shorter": "short", "highest": "high",
-             "higher": "high", "lowest": "low", "lower": "low", "widest": "wide", "wider": "wide",
-             "longest": "wide", "longer": "wide", "upper": "high", "uppermost": "high", "topmost": "high",
-             "lowermost": "low", "bottommost": "low"}
+#: comparative and superlative words by the extreme they rank on
+_EXTREMES = {word: value for value, words in {
+    "large": "largest biggest larger bigger", "small": "smallest smaller tiniest", "tall": "tallest taller",
+    "short": "shortest shorter", "high": "highest higher upper uppermost topmost",
+    "low": "lowest lower lowermost bottommost", "wide": "widest wider longest longer"}.items()
+    for word in words.split()}
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
@@ -138,51 +134,43 @@ class _Reader:
         lex = self.lex = load_lexicon()
         corrected = normalise(lex.respell(text))
         self.structure = parse_request(corrected)
-        kept = [(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"] or t in ("one",)]
-        kept = _side_words(kept, corrected)
+        kept = _side_words([(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"]
+                            or t == "one"], corrected)
         self.toks = toks = [t for t, _ in kept]
         self.offsets = [at for _, at in kept]
         self.corrected = corrected
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas, clause_breaks(corrected, kept))
-        self.cat_at = {s.start: s for s in spans if s.has("cat")  # "toilet" is a category and a room word
-                       and not (s.end - s.start == 1 and toks[s.start] in POSTURE_VERBS
-                                and s.start > 0 and toks[s.start - 1] in MOTION_VERBS)
-                       # a participle is a verb ("the plant standing by the tv"), not the noun of its lemma
-                       and not (s.end - s.start == 1 and toks[s.start].endswith("ing")
-                                and lemmas[s.start] != toks[s.start])}
+        self.cat_at = {s.start: s for s in spans if s.has("cat") and not (  # "toilet": category and room
+            s.end - s.start == 1 and (  # one word that is a verb here: posture after motion ("go sit")
+                toks[s.start] in POSTURE_VERBS and s.start > 0 and toks[s.start - 1] in MOTION_VERBS
+                # or a participle ("the plant standing by the tv"), not the noun of its lemma
+                or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
         self.out = SpatialQuery()
-        self.used: set[int] = set()
         self.last_landmark_end = -1
         self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
-        self.span_of: dict[int, int | None] = {}  # parsed word -> start of the category span of its first token
-        for i, word in enumerate(self.words):
-            if word is not None and word not in self.span_of:
-                self.span_of[word] = next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
+        #: parsed word -> start of the category span holding its first token (`.get`: None when none holds it)
+        self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
+                        for i, word in reversed(list(enumerate(self.words))) if word is not None}
         self.target_at = self.parsed_target()
-        if self.target_at is not None:
-            self.used.add(self.target_at)
+        self.used: set[int] = set() if self.target_at is None else {self.target_at}
 
     def word(self, i: int) -> Word:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
         k = self.words[i]
         return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
 
-    def span_at(self, word: int | None) -> int | None:
-        """Start of the category span that holds the parsed `word`, or None."""
-        return self.span_of.get(word) if word is not None else None
-
     def parsed_target(self) -> int | None:
         """Start of the category span of the target noun the parse names; else of the first span
         naming what the shared reading found as the target; else None."""
-        found = self.span_at(self.structure.target)
+        found = self.span_of.get(self.structure.target)
         if found is not None:
             return found
         named = {c for c, w in analyse_query(self.text).targets.items() if w >= 1.0}
@@ -191,10 +179,9 @@ class _Reader:
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun
         the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
-        cue, st = self.cue_word, self.structure
-        if cue is None:
+        if self.cue_word is None:
             return None
-        cue = self.cue_noun()
+        st, cue = self.structure, self.noun_of(self.cue_word)
         below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)}
         return below if any(st.words[k].pos in ("NOUN", "PROPN", "PRON") for k in below) else None
 
@@ -204,15 +191,11 @@ class _Reader:
         st = self.structure
         if st.words[word].text.lower() in BACK_REFERENCES | {"its"}:
             return True
-        j = self.span_at(word)
+        j = self.span_of.get(word)
         if j is not None and j == self.target_at and any(st.words[d].text.lower() == "this" for d in st.children(word, "det")):
             return True  # "there is a rug under this table", said of the table
         return j is not None and self.target_at is not None and j != self.target_at \
             and self.cat_at[j].values("cat") == self.cat_at[self.target_at].values("cat")
-
-    def cue_noun(self) -> int:
-        """The parsed word the current cue stands for (`noun_of`)."""
-        return self.noun_of(self.cue_word)
 
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
@@ -223,37 +206,34 @@ class _Reader:
         return k
 
     def side_of(self) -> bool:
-        """True when the side word being read names a side of a landmark: the noun it stands for
-        has an "of" ("the right side of the piano", "the left end of a workbench")."""
-        k, st = self.cue_noun(), self.structure
+        """True when the side word's noun has an "of": a landmark's side ("the right side of the piano")."""
+        k, st = self.noun_of(self.cue_word), self.structure
         of = next((n for n in st.children(k, "prep") if st.words[n].text.lower() == "of"), None)
-        if of is None:
-            return False
-        owner = self.span_at(k)  # "the left stool of the three stools": which of them, not a landmark
-        objects = [self.span_at(n) for n in st.children(of, "pobj")] if of is not None else []
-        return owner is None or not any(j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
-                                        for j in objects)
+        owner = self.span_of.get(k)  # "the left stool of the three stools": which of them, not a landmark
+        return of is not None and (owner is None or not any(
+            j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
+            for j in map(self.span_of.get, st.children(of, "pobj"))))
 
     def located_by_pronoun(self) -> int | None:
-        """Start of the category span of what the current cue places relative to the target when
-        its object only points back ("there is a hamper [to its left]", "it has a fern [behind
-        it]"): the noun the phrase hangs on, or the subject or object of its verb; else None."""
+        """Start of the category span of what the cue places relative to the target when its object
+        only points back ("there is a hamper [to its left]"): the noun the phrase hangs on, or the
+        subject or object of its verb; else None."""
         below, st = self.cue_object(), self.structure
         if below is None or not any(self.points_back(k) for k in below) \
-                or any(self.span_at(k) is not None and not self.points_back(k) for k in below):
+                or any(self.span_of.get(k) is not None and not self.points_back(k) for k in below):
             return None
         k = st.words[self.cue_word].head
         while st.words[k].pos in ("ADP", "ADV") and st.words[k].head != k:
             k = st.words[k].head  # "to [its left]": the phrase's own head
         if st.words[k].pos not in ("NOUN", "PROPN"):
             k = next((c for c in range(len(st.words)) if st.words[c].head == k and c != k
-                      and st.words[c].dep in ("attr", "nsubj", "dobj") and self.span_at(c) is not None), None)
-        j = self.span_at(k)
+                      and st.words[c].dep in ("attr", "nsubj", "dobj")
+                      and self.span_of.get(c) is not None), None)
+        j = self.span_of.get(k)
         return j if j is not None and j not in self.used and not self.points_back(k) else None
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
-        """Attributes of the noun at `start`, read leftwards over attributes, colour suffixes and
-        comparatives ("the green upper shelf", "the cream-coloured desk")."""
+        """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured")."""
         found, end = [], start
         suffixes = self.lex.words["color_suffixes"]
         while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes)):
@@ -284,14 +264,14 @@ class _Reader:
         """Parsed words that are the current cue's own objects: its noun objects, those of its
         prepositions ("nearest [to] the fireplace", "the far side [of] the piano") and their conjuncts."""
         st = self.structure
-        owners = {self.cue_word, self.cue_noun()}
+        owners = {self.cue_word, self.noun_of(self.cue_word)}
         owners |= {k for k, w in enumerate(st.words) if w.head in owners and w.dep == "prep" and k not in owners}
         objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
         return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
 
     def viewpoint_clause_end(self, i: int) -> int | None:
-        """Offset of the comma that closes the viewpoint clause whose cue ends before token `i`
-        ("facing the window[,] ...") when the parse's target lies inside that clause; else None."""
+        """Offset of the comma closing the viewpoint clause ("facing the window[,] ...") whose cue
+        ends before token `i`, when the parse's target lies inside that clause; else None."""
         at = self.target_at
         if at is None or at < i:
             return None
@@ -308,15 +288,12 @@ class _Reader:
 
     def turned_to(self, k: int | None) -> bool:
         """True when the parsed side word `k` is what a verb of turning takes, directly or through
-        "to" or "towards" ("facing left", "turned towards the right"; "facing the desk on the
-        right" keeps its place)."""
+        "to" or "towards" ("facing left", "turned towards the right"; not "facing the desk on the right")."""
         st = self.structure
-        if k is None:
-            return False
-        head = st.words[k].head
-        if st.words[head].text.lower() in ("to", "towards", "toward") and head != k:
+        head = st.words[k].head if k is not None else None
+        if head is not None and st.words[head].text.lower() in ("to", "towards", "toward"):
             head = st.words[head].head
-        return head != k and st.words[head].text.lower() in _TURNED
+        return head is not None and st.words[head].text.lower() in _TURNED
 
     def on_a_plan(self, i: int) -> bool:
         """True when the height word at `i` comes before a side or corner ("the top left corner",
@@ -328,8 +305,7 @@ class _Reader:
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height: a
         modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
-        "of" said of the target ("the cup on top"); not before a side or corner ("the top left
-        corner": a place on a plan)."""
+        "of" said of the target ("the cup on top"); not a place on a plan (`on_a_plan`)."""
         if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None or self.on_a_plan(i):
             return False
         st, k = self.structure, self.words[i]
@@ -337,7 +313,7 @@ class _Reader:
         if st.children(k, "amod") or st.children(k, "compound") or i in self.part_described:
             return False  # the top itself described ("a glass top table"): a part, not a height
         if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place
-            return self.target_at is not None and self.span_at(word.head) == self.target_at
+            return self.target_at is not None and self.span_of.get(word.head) == self.target_at
         if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") \
                 or any(st.words[c].text.lower() == "of" for c in st.children(k, "prep")):
             return False
@@ -345,7 +321,7 @@ class _Reader:
         if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
             subject = next(iter(st.children(owner, "nsubj")), None)
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
-        return owner is not None and (self.span_at(owner) == self.target_at or self.points_back(owner))
+        return owner is not None and (self.span_of.get(owner) == self.target_at or self.points_back(owner))
 
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
@@ -357,18 +333,17 @@ class _Reader:
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
                 and not any(self.structure.words[c].text.lower() == "of"  # "one of the plates": the plates
                             for c in self.structure.children(self.words[one], "prep")):
-            rel.landmarks.append(tuple(self.cat_at[self.target_at].values("cat")))
-            rel.landmark_attrs.append(self.attrs_before(one))
-            self.last_landmark_end = one + 1
-            return True
-        j = self.next_cat(pos)
-        if j is None:
-            return False
-        self.used.add(j)
-        self.taken.setdefault(id(rel), []).append(j)
-        self.last_landmark_end = self.cat_at[j].end
-        rel.landmarks.append(tuple(c for c in self.cat_at[j].values("cat")))
-        rel.landmark_attrs.append(self.attrs_before(j))
+            at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
+        else:
+            at = self.next_cat(pos)
+            if at is None:
+                return False
+            self.used.add(at)
+            self.taken.setdefault(id(rel), []).append(at)
+            end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
+        rel.landmarks.append(tuple(kind))
+        rel.landmark_attrs.append(self.attrs_before(at))
+        self.last_landmark_end = end
         return True
 
     def read(self) -> SpatialQuery:
@@ -392,9 +367,8 @@ class _Reader:
                 i += 1
             else:
                 i = self.cue(i)
-        for k in negated:
-            if k < len(out.relations):
-                out.relations[k].negated = True
+        for rel in (out.relations[k] for k in negated if k < len(out.relations)):
+            rel.negated = True
         return self.target()
 
     def cue(self, i: int) -> int:
@@ -405,30 +379,25 @@ class _Reader:
         if cue is None:
             return i + 1
         words, kind = cue
-        self.cue_word = self.words[i + len(words) - 1]
-        stranded = kind in INVERSE_RELATION and is_stranded(toks, i + len(words), self.finals)
-        if self.word(i + len(words) - 1).dep == "prt" and not stranded:
-            return i + len(words)  # "switch on the lamp": a particle of the verb, not a place (but
-            # "pick the one across [from] the sofa": a cue's last word with its object is one)
-        if kind in ("left", "right") and self.turned_to(self.cue_word):
-            return i + len(words)  # "the chair is facing left": which way it is turned, not where
-        if words == ("face",) and self.word(i).pos != "VERB":
-            return i + 1  # "the clock face": a noun, not "face the window"
-        if words == ("at",) and not self.beside(self.words[i]):
-            return i + 1
+        end = i + len(words)
+        self.cue_word = self.words[end - 1]
+        stranded = kind in INVERSE_RELATION and is_stranded(toks, end, self.finals)
+        if (self.word(end - 1).dep == "prt" and not stranded  # "switch on the lamp": a particle of the verb
+                # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
+                or kind in ("left", "right") and self.turned_to(self.cue_word)  # "facing left": turned
+                or words == ("face",) and self.word(i).pos != "VERB"  # "the clock face": a noun
+                or words == ("at",) and not self.beside(self.words[i])):
+            return end
         if kind != "facing" and self.viewer_place():  # "when standing by the door, ...": where the viewer is
-            self.viewer_landmark(Relation(kind), i + len(words))  # its noun is no target
-            return i + len(words)
-        if is_destination(toks, i, len(words)):
-            return i + len(words)  # "head over to", "stop by", "walk up to": where to go, not a relation
-        if stranded and self.inverse(i, kind):
-            return i + len(words)
-        return self.relation(i + len(words), words, kind)
+            self.viewer_landmark(Relation(kind), end)  # its noun is no target
+            return end
+        if is_destination(toks, i, len(words)) or stranded and self.inverse(i, kind):
+            return end  # "head over to", "stop by": where to go; or a relative clause read (`inverse`)
+        return self.relation(end, words, kind)
 
     def inverse(self, i: int, kind: str) -> bool:
-        """A stranded preposition of a relative clause ("the cabinet the printer sits on"): the
-        clause's noun is the landmark and the relation is seen from the target; False when the
-        clause has no such noun."""
+        """A relative clause's stranded preposition ("the cabinet the printer sits on"): its noun is
+        the landmark, the relation seen from the target; False when the clause has no such noun."""
         j = clause_landmark(self.cat_at, self.toks, i)
         owner = next((r for r in self.out.relations if j in self.taken.get(id(r), ())), None)
         if j is None or (j in self.used and (owner is None or owner.kind != "with")):
@@ -436,8 +405,13 @@ class _Reader:
         if owner is not None:  # "with a lamp next to it": one fact, the clause says which way
             self.out.relations.remove(owner)
             self.used.discard(j)
+        return self.seen_from_target(kind, j)
+
+    def seen_from_target(self, kind: str, j: int) -> bool:
+        """Add the relation of `kind` seen from the target (`INVERSE_RELATION`), to the category span
+        at `j` as its landmark (which comes before the cue, or is what the cue places); True."""
         rel = Relation(INVERSE_RELATION[kind])
-        self.cue_word = None  # the clause's noun comes before its stranded preposition
+        self.cue_word = None
         self.landmark(rel, j)
         self.out.relations.append(rel)
         return True
@@ -447,8 +421,8 @@ class _Reader:
         toks, out = self.toks, self.out
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
-        side_noun = (nxt in ("left", "right") or (nxt,) in _CUES and _CUES[(nxt,)] in COMPASS) \
-            and self.span_at(self.noun_of(self.words[i])) is None
+        side_noun = (nxt in ("left", "right") or _CUES.get((nxt,)) in COMPASS) \
+            and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind != "facing" and len(words) == 1 and self.said_by_someone(i - 1):
@@ -514,11 +488,11 @@ class _Reader:
         target's own kind ("of the three vases"); the room's middle or corner when X is no object
         (a room named after "of" is read for itself, so a clause on it keeps its own relation)."""
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
-        objects |= {o for k in objects if self.span_at(k) is None for p in st.children(k, "prep")
+        objects |= {o for k in objects if self.span_of.get(k) is None for p in st.children(k, "prep")
                     if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
         if kind == "middle" and any(self.points_back(k) for k in objects):
             rel.value = "group"
-        elif any(self.span_at(k) is not None for k in objects):
+        elif any(self.span_of.get(k) is not None for k in objects):
             self.landmark(rel, i)
         self.out.relations.append(rel)
         return i
@@ -526,8 +500,8 @@ class _Reader:
     def says_which_landmark(self, kind: str) -> bool:
         """True when the cue word is on a landmark's noun, not the target's ("on the left bench",
         "by the middle window"): it says which of the landmark's instances (`landmark_where`)."""
-        noun = self.cue_noun()
-        owner = self.span_at(noun)
+        noun = self.noun_of(self.cue_word)
+        owner = self.span_of.get(noun)
         if owner is None or owner == self.target_at or self.target_at is None or self.points_back(noun):
             return False  # on the target's own noun or its kind named again ("facing the vases, the left vase")
         described = next((r for r in self.out.relations if owner in self.taken.get(id(r), ())), None)
@@ -537,8 +511,7 @@ class _Reader:
 
     def viewer_landmark(self, rel: Relation, pos: int) -> None:
         """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
-        takes it; in front of it or at its foot or end the viewer looks at it ("from the foot of
-        the bed": facing the bed)."""
+        takes it; at its front, foot or end, as what the viewer faces ("from the foot of the bed")."""
         objects = self.cue_objects()
         if not self.landmark(rel, pos) or self.out.facing:
             return
@@ -546,11 +519,7 @@ class _Reader:
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
         if not objects & set(self._span_words(j)) and not part:
             return  # "standing at the centre of the hall, ...": no object the cue takes
-        at = tuple(self.cat_at[j].values("cat"))
-        if part:
-            self.out.facing = at
-        else:
-            self.out.viewer_at = at
+        setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
 
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
@@ -568,38 +537,25 @@ class _Reader:
             self.pending_ordinal.value = "landmark"
         return i
 
-    def takes_object(self) -> bool:
-        """True when the cue word is a preposition with an object in the parse ("behind [the sofa]")."""
-        return self.cue_word is not None and bool(self.structure.children(self.cue_word, "pobj"))
-
     def said_by_someone(self, i: int) -> bool:
-        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she
-        left on the hook", "what we have left"), not a cue word the tagger merely calls a verb
-        ("facing the stove, left jar")."""
+        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she left
+        on the hook"), not a cue word the tagger merely calls a verb ("facing the stove, left jar")."""
         at, st = self.words[i], self.structure
-        if at is None or st.words[at].pos not in ("VERB", "AUX"):
-            return False
-        return any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
+        return at is not None and st.words[at].pos in ("VERB", "AUX") \
+            and any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
         category itself, not a part of one ("at one end of the workbench") or a place looked at."""
         st = self.structure
-        if at is None or st.words[st.words[at].head].text.lower() in _LOOKING:
-            return False
-        return any(self.span_at(k) is not None for k in st.children(at, "pobj"))
+        return at is not None and st.words[st.words[at].head].text.lower() not in _LOOKING \
+            and any(self.span_of.get(k) is not None for k in st.children(at, "pobj"))
 
     def inverse_by_pronoun(self, kind: str) -> bool:
         """Read the relation seen from the target when the cue places another thing relative to it
         ("there is a hamper to its left", "a fruit bowl sits on the sideboard"); False when it does not."""
         located = self.located_by_pronoun() if kind in INVERSE_RELATION else None
-        if located is None:
-            return False
-        rel = Relation(INVERSE_RELATION[kind])
-        self.cue_word = None
-        self.landmark(rel, located)
-        self.out.relations.append(rel)
-        return True
+        return located is not None and self.seen_from_target(kind, located)
 
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
@@ -610,7 +566,8 @@ class _Reader:
             if self.inverse_by_pronoun(kind):
                 return i
             if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
-                    or (kind == "behind" and self.takes_object()):
+                    or (kind == "behind" and self.cue_word is not None
+                        and self.structure.children(self.cue_word, "pobj")):
                 self.landmark(rel, i)  # "left of my bed", "behind a sofa"
             out.relations.append(rel)
             return i
@@ -647,9 +604,8 @@ class _Reader:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
         toks, out, taken = self.toks, self.out, self.taken
-        target = self.target_at
-        if target is None:
-            target = next((j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
+        target = self.target_at if self.target_at is not None else next(
+            (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         info = analyse_query(self.text)
@@ -681,8 +637,7 @@ class _Reader:
 
 @lru_cache(maxsize=4096)
 def parse_query(text: str) -> SpatialQuery:
-    """The spatial reading of `text` (no relations when it states none). Memoised: retrieval's
-    choice of experts, the gate's weighing and the spatial expert of one query share it, so no
-    caller may change it."""
+    """The spatial reading of `text` (no relations when it states none). Memoised and shared by
+    retrieval's choice of experts, the gate and the spatial expert: no caller may change it."""
     return _Reader(text).read()
 

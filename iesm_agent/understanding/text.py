@@ -8,6 +8,8 @@ from dataclasses import dataclass
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
+_CLAUSE_MARK = re.compile(r"[.,;:!?()]")
+
 
 @dataclass(frozen=True)
 class Slot:
@@ -26,27 +28,15 @@ def lemmatise(lex: Lexicon, tokens: list[str]) -> list[str]:
     its form ("the lamp standing on the desk": a verb, so never the category "lamp stand"); a
     gerund after a preposition is read as its verb ("for resting on" -> rest)."""
     bounds = lex.words["boundaries"]
-    out = []
-    for i, token in enumerate(tokens):
-        lemma = lex.lemma(token)
-        if token.endswith("ing") and lemma != token and i + 1 < len(tokens) and tokens[i + 1] in bounds \
-                and i > 0 and tokens[i - 1] not in bounds:  # a participle after a noun: "the lamp standing on"
-            lemma = token
-        out.append(lemma)
-    return out
+    return [token if token.endswith("ing") and 0 < i < len(tokens) - 1 and tokens[i + 1] in bounds
+            and tokens[i - 1] not in bounds else lex.lemma(token) for i, token in enumerate(tokens)]
 
 
 def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
     """Stems of words and of the parts of hyphenated words; imitation words read as "like"."""
-    out: set[str] = set()
     imitation = lex.words["imitation_suffixes"]
-    for w in lemmas:
-        for part in (w, *w.split("-")) if "-" in w else (w,):
-            if part in imitation:
-                part = "like"
-            if len(part) > 2:
-                out.add(stem(part))
-    return out
+    return {stem("like" if part in imitation else part) for w in lemmas for part in (w, *w.split("-"))
+            if part in imitation or len(part) > 2}
 
 
 def stem(word: str) -> str:
@@ -81,12 +71,8 @@ def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
 def modifier_spans(lex: Lexicon, lemmas: list[str], span: Span) -> list[Span]:
     """Attribute words inside a multi-word category phrase, as one-word spans: a modifier there
     is also a description ("mesh chair": mesh; "small table": small)."""
-    out = []
-    for k in range(span.start, span.end) if span.end - span.start > 1 else ():
-        kinds = tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS)
-        if kinds:
-            out.append(Span(k, k + 1, kinds))
-    return out
+    return [Span(k, k + 1, kinds) for k in (range(span.start, span.end) if span.end - span.start > 1 else ())
+            if (kinds := tuple(kv for kv in lex.phrases.get((lemmas[k],), ()) if kv[0] in ATTRIBUTE_KINDS))]
 
 
 def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple[list[Slot], set[int]]:
@@ -120,9 +106,6 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
             slots.append(Slot("color", lemmas[i], lemmas[i], frozenset()))
             used.update((i, i + 1))
     return slots, used
-
-
-_CLAUSE_MARK = re.compile(r"[.,;:!?()]")
 
 
 def clause_breaks(text: str, tokens: list[tuple[str, int]]) -> frozenset[int]:
