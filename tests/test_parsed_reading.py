@@ -204,9 +204,9 @@ def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text
     ("boil some water for a mug of cocoa", "cocoa"),
 ])
 def test_a_vessel_that_counts_out_a_wished_portion_is_not_what_is_asked_for(text, wanted):
-    q = analyse_query(text)
-    assert not {"cup", "bottle", "pot"} & set(q.targets)
-    assert wanted in q.text and "of" not in q.text.split()
+    structure = parse_request(normalise(text))
+    assert not {"cup", "bottle", "pot"} & set(analyse_query(text).targets)
+    assert wanted in structure.text.split() and "of" not in structure.text.split()
 
 
 def test_a_vessel_already_somewhere_is_the_thing_to_go_to():

@@ -32,8 +32,7 @@ _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
 #: "make the bed"): what they make is no place to go
 _MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
-#: vessels and measures that only count out what the speaker wants to have ("a cup of tea", "a
-#: plate of food"): in a wish or a making, the content is what is asked for, not the vessel
+#: vessels that count out what the speaker wants ("a cup of tea"): the tea is wanted, not the cup
 _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
@@ -98,7 +97,7 @@ class Structure:
     context: tuple[tuple[int, int], ...]
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
-    portions: tuple[tuple[int, int], ...] = ()  # character ranges of "cup of" in "I'd love a cup of tea"
+    text: str = ""  # the text parsed: the request without the vessels of a wished portion
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -162,6 +161,11 @@ def parse_many(texts: list[str]) -> None:
 def _parse_sentences(text: str, at: int = 0) -> Structure:
     """The structure of `text[at:]` as parsed, every sentence of it, at `text`'s character offsets."""
     doc = _batch.get(text[at:]) or _pipeline()(text[at:])  # (an empty doc is parsed again: the same)
+    cuts = [(t.idx + at, (of := doc[_partitive(t)].head).idx + len(of) + at) for t in doc if _wished_portion(t)]
+    for start, end in reversed(cuts):  # "I'd love a cup of tea": read as "a tea"
+        text = text[:start] + text[end:]
+    if cuts:
+        return _parse_sentences(text, at)
     words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
     readings = [_sentence_target(doc, s) for s in sentences]
@@ -170,7 +174,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
                     for kind, target in readings]  # "Take me to it.": about the one named before
     chosen = _choose_sentence(readings)
     if chosen is None:
-        return Structure(words, None, None, (at, len(text)), ())
+        return Structure(words, None, None, (at, len(text)), (), text=text)
     target = readings[chosen][1]
     request_end = chosen + 1
     if target is not None and (doc[target].lower_ in STAND_INS or doc[target].pos_ in ("PRON", "DET", "NUM")):
@@ -184,24 +188,16 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    portions = tuple((t.idx + at, of.idx + len(of) + at) for t in doc if (of := _wished_portion(t)) is not None)
-    return Structure(words, target, phrase, request, context, _left_place(doc, request, at), portions=portions)
+    return Structure(words, target, phrase, request, context, _left_place(doc, request, at), text=text)
 
 
-def _wished_portion(token):
-    """The "of" after a vessel or measure that counts out what the speaker wants to have or make
-    ("I'd love a cup of tea", "brew a pot of coffee", "water for a cup of coffee"), else None; a
-    vessel that is there already ("someone left a cup of tea") is a thing, not a portion."""
-    if token.lemma_ not in _PORTIONS or token.pos_ not in NOUNS:
-        return None
-    of = next((c for c in token.children if c.dep_ == "prep" and c.lower_ == "of"
-               and any(g.dep_ == "pobj" and g.pos_ in NOUNS for g in c.children)), None)
-    if of is None:
-        return None
-    head = token.head
-    wished = token.dep_ == "dobj" and (_made(token) or any(
-        c.dep_ == "nsubj" and c.lower_ in _PERSONAL for c in head.children))
-    return of if wished or (token.dep_ == "pobj" and head.lower_ == "for") else None
+def _wished_portion(token) -> bool:
+    """True for a vessel that counts out what the speaker wants or makes ("I'd love a cup of tea",
+    "water for a mug of cocoa"); not for one that is there already ("someone left a cup of tea")."""
+    wished = token.dep_ == "dobj" and (_made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL
+                                                           for c in token.head.children))
+    return token.lemma_ in _PORTIONS and _partitive(token) is not None and (
+        wished or token.dep_ == "pobj" and token.head.lower_ == "for")
 
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:

@@ -225,20 +225,14 @@ class _Reading:
     spans: list[Span]
     preamble: list[str]
     ruled_out: list["QueryInfo"]
-    portioned: bool = False  # vessels of a wished portion left out of `text` ("a cup of tea": tea)
 
 
 def _read_request(lex: Lexicon, text: str) -> _Reading:
     """Spell, parse and tokenise `text`: the request's tokens without the words that only say
     where to go or what to do ("take me to", "head over to"), with what follows an exclusion
     marker read apart and what comes before the request phrase kept as the preamble."""
-    corrected = normalise(lex.respell(text))
-    structure = parse_request(corrected)
-    portioned = bool(structure.portions)
-    for start, end in reversed(structure.portions):  # "I'd love a cup of tea": the tea is wanted
-        corrected = corrected[:start] + corrected[end:]
-    if portioned:
-        structure = parse_request(corrected)
+    structure = parse_request(normalise(lex.respell(text)))
+    corrected = structure.text  # without the vessels of a wished portion ("a cup of tea": a tea)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
@@ -255,7 +249,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
-    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out, portioned)
+    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
 
 
 def parse_queries(texts: list[str]) -> None:
@@ -270,7 +264,7 @@ def analyse_query(text: str) -> QueryInfo:
     after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     reading = _read_request(lex, text)
-    info = _draft(reading.text if reading.portioned else text)  # the text the experts weigh as a whole
+    info = _draft(text)
     info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
