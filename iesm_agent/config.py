@@ -43,7 +43,11 @@ class MappingConfig(BaseModel):
     of the horizontal plane at the mask's top height where that plane is seen at grazing incidence
     (|cos| under `top_fill_max_cos`) and lies at most `top_fill_max_ratio` times as far as the
     column's highest reading (`mapping.tops.fill_tops`): the tops of objects below the camera, which
-    the sensor does not read."""
+    the sensor does not read. `reliable_depth` (m, None = off): an instance's footprint keeps only
+    the cells some reading nearer than this placed, when it has any (an instance seen only from
+    farther keeps every cell); every view still votes for its label and caption
+    (`InstanceDictionary.reliable_footprints`): the simulator's depth noise grows as z^2
+    (`sim/sensor.py`), so a far view's cells stray from its object."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -88,6 +92,7 @@ class MappingConfig(BaseModel):
     # also bounded by the first reading beyond the object, `mapping.tops.fill_tops`)
     top_fill_max_cos: Optional[float] = Field(0.3, gt=0, le=1)
     top_fill_max_ratio: float = Field(1.1, ge=1)
+    reliable_depth: Optional[float] = Field(None, gt=0)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -100,7 +105,8 @@ class MappingConfig(BaseModel):
         """Our association as before issue 29 (strong-overlap link at 0.7) on uncleaned geometry
         (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "top_fill_max_cos": None, "delta_geo_strong": 0.7, **values})
+                      "top_fill_max_cos": None, "reliable_depth": None,
+                      "delta_geo_strong": 0.7, **values})
 
 
 class RetrievalConfig(BaseModel):
