@@ -206,8 +206,8 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     sums = np.bincount(inverse, weights=z, minlength=len(groups))        # float64
     top = np.full(len(groups), -np.inf, np.float32)
     np.maximum.at(top, inverse, z)
-    near = np.full(len(groups), np.inf, np.float32)   # pixels without a usable reading: their own groups, dropped
-    np.minimum.at(near, inverse, np.where(img.cell[pix] < img.n_box, depth.ravel()[pix], np.inf))
+    near = np.full(len(groups), np.inf, np.float32)   # fmin: the unusable readings (NaN among them) group apart, dropped
+    np.fmin.at(near, inverse, depth.ravel()[pix])
     group_k, group_cell = np.divmod(groups, n)
     has_depth = group_cell < img.n_box
     usable_px = np.bincount(group_k[has_depth], weights=n_pts[has_depth], minlength=k_all)
