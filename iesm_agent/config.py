@@ -98,7 +98,7 @@ class MappingConfig(BaseModel):
     # off, ties by realistic then easy matched; realistic matched 59.8 -> 61.8 of 71.6, stacked 57 -> 61 of 103;
     # check seeds 5-9: 59.4 -> 61.4 of 74.2, stacked 53 -> 58 of 115), and on fresh seeds 15-19 it lifts matched
     # 58.6 -> 60.4 of 71.0 and stacked top-1 over all 0.544 -> 0.609, but retrieval O-SR on built maps loses
-    # (seeds 15-17 MTEFR 78.7 -> 78.0, SPR 79.3 -> 78.0: doors whose far cells decided their room), so it is not
+    # (seeds 15-17 MTEFR 78.7 -> 78.0, SPR 79.3 -> 78.0: every answer lost a door whose room moved), so it is not
     # the default (docs/results.md). At 4 m the simulator's depth noise, 0.0028 z^2 m (`sim/realism.py`), is
     # 4.5 cm, about a cell.
     reliable_depth: Optional[float] = Field(None, gt=0)
@@ -114,8 +114,7 @@ class MappingConfig(BaseModel):
         """Our association as before issue 29 (strong-overlap link at 0.7) on uncleaned geometry
         (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "top_fill_max_cos": None, "reliable_depth": None,
-                      "delta_geo_strong": 0.7, **values})
+                      "top_fill_max_cos": None, "reliable_depth": None, "delta_geo_strong": 0.7, **values})
 
 
 class RetrievalConfig(BaseModel):

@@ -61,8 +61,9 @@ def test_both_thresholds_must_pass_and_the_largest_phi_wins():
 
 
 def test_union_keeps_the_higher_top_and_the_nearer_reading_per_cell():
-    keys, top, near = union_cells(row_keys(0, [1, 2]), np.array([0.5, 0.7], np.float32), np.array([2.0, 4.5], np.float32),
-                                  row_keys(0, [2, 3]), np.array([0.9, 0.1], np.float32), np.array([3.0, 1.0], np.float32))
+    f32 = np.float32
+    keys, top, near = union_cells(row_keys(0, [1, 2]), np.array([0.5, 0.7], f32), np.array([2.0, 4.5], f32),
+                                  row_keys(0, [2, 3]), np.array([0.9, 0.1], f32), np.array([3.0, 1.0], f32))
     assert keys.tolist() == row_keys(0, [1, 2, 3]).tolist()
     assert top.tolist() == pytest.approx([0.5, 0.9, 0.1])
     assert near.tolist() == pytest.approx([2.0, 3.0, 1.0])

@@ -1,5 +1,6 @@
 """`project_candidates` against a plain per-mask, per-cell reference (overlapping masks, missing
-and far depth, min_pixels; per cell the highest point and the nearest reading), and `cells.group_ids` on its counting and its sorting path."""
+and far depth, min_pixels; per cell the highest point and the nearest reading), and
+`cells.group_ids` on its counting and its sorting path."""
 
 import numpy as np
 import pytest

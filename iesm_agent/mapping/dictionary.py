@@ -9,8 +9,9 @@ the same way), the weight w (number of fused observations) and its observations
 (frame index, mask index, mask area in pixels, mask score).
 
 Fusion of an entry with weight w and an observation of weight v (1 for a frame's candidate):
-mask OR (per-cell top = max, nearest reading = min), f <- (w f + v f_c) / (w + v), h likewise, w <- w + v. With v = 1
-these are the paper's equations; the second pass fuses whole entries with v = their weight.
+mask OR (per-cell top = max, nearest reading = min), f <- (w f + v f_c) / (w + v), h likewise,
+w <- w + v. With v = 1 these are the paper's equations; the second pass fuses whole entries with
+v = their weight.
 """
 
 from __future__ import annotations
@@ -141,7 +142,8 @@ class InstanceDictionary:
         merges = 0
         for i in np.argsort(-self.weights, kind="stable"):
             m = link(self, out, i)
-            args = (self.keys[i], self.tops[i], self.near[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
+            args = (self.keys[i], self.tops[i], self.near[i], self._f[i], self._h[i], self._w[i], self._bbox[i],
+                    self.observations[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1

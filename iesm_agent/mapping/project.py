@@ -206,7 +206,8 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     sums = np.bincount(inverse, weights=z, minlength=len(groups))        # float64
     top = np.full(len(groups), -np.inf, np.float32)
     np.maximum.at(top, inverse, z)
-    near = np.full(len(groups), np.inf, np.float32)   # fmin: the unusable readings (NaN among them) group apart, dropped
+    near = np.full(len(groups), np.inf, np.float32)
+    # fmin: the unusable readings (NaN among them) fall in the "no depth" groups, dropped below
     np.fmin.at(near, inverse, depth.ravel()[pix])
     group_k, group_cell = np.divmod(groups, n)
     has_depth = group_cell < img.n_box
