@@ -43,7 +43,11 @@ class MappingConfig(BaseModel):
     of the horizontal plane at the mask's top height where that plane is seen at grazing incidence
     (|cos| under `top_fill_max_cos`) and lies at most `top_fill_max_ratio` times as far as the
     column's highest reading (`mapping.tops.fill_tops`): the tops of objects below the camera, which
-    the sensor does not read."""
+    the sensor does not read. `reliable_depth` (m, None = off): an instance's footprint keeps only
+    the cells some reading nearer than this placed, when it has any (an instance seen only from
+    farther keeps every cell); every view still votes for its label and caption
+    (`InstanceDictionary.reliable_footprints`): the simulator's depth noise grows as z^2
+    (`sim/sensor.py`), so a far view's cells stray from its object."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -88,6 +92,16 @@ class MappingConfig(BaseModel):
     # also bounded by the first reading beyond the object, `mapping.tops.fill_tops`)
     top_fill_max_cos: Optional[float] = Field(0.3, gt=0, le=1)
     top_fill_max_ratio: float = Field(1.1, ge=1)
+    # cells placed only by far readings (issue 29, stacked objects inflated at range). Off: 4 m was chosen on tuning
+    # seeds 0-4 from {2.5, 3, 3.5, 4, 4.5, 5} m x cut before / after the second pass (the most stacked objects
+    # named right under realistic with matched seen objects on neither profile and stacked under easy lower than
+    # off, ties by realistic then easy matched; realistic matched 59.8 -> 61.8 of 71.6, stacked 57 -> 61 of 103;
+    # check seeds 5-9: 59.4 -> 61.4 of 74.2, stacked 53 -> 58 of 115), and on fresh seeds 15-19 it lifts matched
+    # 58.6 -> 60.4 of 71.0 and stacked top-1 over all 0.544 -> 0.609, but retrieval O-SR on built maps loses
+    # (seeds 15-17 MTEFR 78.7 -> 78.0, SPR 79.3 -> 78.0: every answer lost a door whose room moved), so it is not
+    # the default (docs/results.md). At 4 m the simulator's depth noise, 0.0028 z^2 m (`sim/realism.py`), is
+    # 4.5 cm, about a cell.
+    reliable_depth: Optional[float] = Field(None, gt=0)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -100,7 +114,7 @@ class MappingConfig(BaseModel):
         """Our association as before issue 29 (strong-overlap link at 0.7) on uncleaned geometry
         (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "top_fill_max_cos": None, "delta_geo_strong": 0.7, **values})
+                      "top_fill_max_cos": None, "reliable_depth": None, "delta_geo_strong": 0.7, **values})
 
 
 class RetrievalConfig(BaseModel):

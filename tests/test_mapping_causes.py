@@ -2,7 +2,8 @@
 
 import numpy as np
 
-from iesm_agent.evals.mapping_causes import cause_counts, unmatched_causes
+from iesm_agent.evals.mapping_causes import cause_counts, mask_objects, unmatched_causes
+from iesm_agent.frames import Frame, Segmentation
 
 
 def _entries(masks: dict[int, list[int]]) -> tuple[np.ndarray, np.ndarray]:
@@ -116,3 +117,27 @@ def test_same_label_pairs_and_extra_instances_tell_fragments_from_neighbours():
     extras = extra_instances(scene, main, MappingConfig())
     assert [(e["primary"], e["extra"], e["same_label"]) for e in extras] == [(1, 2, True), (1, 4, False)]
     assert extras[1]["cause"] == "footprints apart"
+
+
+class _Frames:
+    """Two frames of 4 x 5 pixels showing objects 3 (left) and 7 (right): the first with one mask
+    over the right half, the second with no mask at all (a fresh seed has such a frame)."""
+
+    def __init__(self):
+        self.inst = np.zeros((4, 5), np.int32)
+        self.inst[:, :2], self.inst[:, 2:] = 3, 7
+        self.masks = [np.zeros((1, 4, 5), bool), np.zeros((0, 4, 5), bool)]
+        self.masks[0][0, :, 2:] = True
+
+    def __len__(self):
+        return 2
+
+    def read(self, i):
+        seg = Segmentation(self.masks[i], np.zeros((len(self.masks[i]), 2), np.float32),
+                           np.ones(len(self.masks[i]), np.float32))
+        return Frame(i, np.zeros((4, 5, 3), np.uint8), np.ones((4, 5), np.float32), np.eye(4), segmentation=seg,
+                     instance_ids=self.inst)
+
+
+def test_mask_objects_reads_frames_without_masks():
+    assert mask_objects(_Frames(), min_pixels=5) == {(0, 0): 7}

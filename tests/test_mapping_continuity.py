@@ -32,8 +32,8 @@ def _dictionary(parts: list[tuple[tuple[int, int, int, int], float, float]],
     d = InstanceDictionary(2, cfg or MappingConfig())
     for k, ((r0, r1, c0, c1), angle, weight) in enumerate(parts):
         keys = _rect(r0, r1, c0, c1)
-        d.add(keys, np.full(len(keys), 2.6, np.float32), _unit(angle), 1.3, weight, np.array([r0, r1, c0, c1]),
-              [(k, 0, 100, 1.0)])
+        d.add(keys, np.full(len(keys), 2.6, np.float32), np.ones(len(keys), np.float32), _unit(angle), 1.3, weight,
+              np.array([r0, r1, c0, c1]), [(k, 0, 100, 1.0)])
     return d
 
 

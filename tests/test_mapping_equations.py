@@ -8,7 +8,7 @@ import pytest
 from iesm_agent.config import MappingConfig
 from iesm_agent.mapping.association import iou, phi_geo, phi_sem, select_matches
 from iesm_agent.mapping.categorize import categorize, category_scores
-from iesm_agent.mapping.cells import intersections, keys_of, union_max
+from iesm_agent.mapping.cells import intersections, keys_of, union_cells
 from iesm_agent.mapping.dictionary import InstanceDictionary
 from iesm_agent.evals.mapping_metrics import auc_top, auc_top_all, gt_ranks, label_map_scores, topk_curve
 from iesm_agent.mapping.project import TopDownCandidates, project_candidates
@@ -60,17 +60,20 @@ def test_both_thresholds_must_pass_and_the_largest_phi_wins():
     assert select_matches(np.array([0]), np.array([0]), np.array([0.4]), np.array([0.9]), 1, CFG).tolist() == [-1]
 
 
-def test_union_keeps_the_higher_top_per_cell():
-    keys, top = union_max(row_keys(0, [1, 2]), np.array([0.5, 0.7], np.float32),
-                          row_keys(0, [2, 3]), np.array([0.9, 0.1], np.float32))
+def test_union_keeps_the_higher_top_and_the_nearer_reading_per_cell():
+    f32 = np.float32
+    keys, top, near = union_cells(row_keys(0, [1, 2]), np.array([0.5, 0.7], f32), np.array([2.0, 4.5], f32),
+                                  row_keys(0, [2, 3]), np.array([0.9, 0.1], f32), np.array([3.0, 1.0], f32))
     assert keys.tolist() == row_keys(0, [1, 2, 3]).tolist()
     assert top.tolist() == pytest.approx([0.5, 0.9, 0.1])
+    assert near.tolist() == pytest.approx([2.0, 3.0, 1.0])
 
 
 def _one(keys: np.ndarray, top: float, height: float, area: int) -> TopDownCandidates:
     rows, cols = keys // (1 << 21) - (1 << 20), keys % (1 << 21) - (1 << 20)
     return TopDownCandidates(mask_index=np.array([0]), offsets=np.array([0, len(keys)]), keys=keys,
-                             top=np.full(len(keys), top, np.float32), mean_height=np.array([height]),
+                             top=np.full(len(keys), top, np.float32), near=np.ones(len(keys), np.float32),
+                             mean_height=np.array([height]),
                              area_px=np.array([area]), bbox=np.array([[rows.min(), rows.max(), cols.min(), cols.max()]]))
 
 

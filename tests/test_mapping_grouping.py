@@ -1,5 +1,6 @@
 """`project_candidates` against a plain per-mask, per-cell reference (overlapping masks, missing
-and far depth, min_pixels), and `cells.group_ids` on its counting and its sorting path."""
+and far depth, min_pixels; per cell the highest point and the nearest reading), and
+`cells.group_ids` on its counting and its sorting path."""
 
 import numpy as np
 import pytest
@@ -18,8 +19,10 @@ def _reference(depth, masks, k, pose, cell, min_pixels, max_depth):
             continue
         keys, z = pixel_cells(depth, pixels, *k, pose, cell)
         cells = {key: z[keys == key] for key in np.unique(keys)}
+        reading = depth.ravel()[pixels]
         out.append((m, int(masks[m].sum()), sorted(cells),
                     [float(cells[key].max()) for key in sorted(cells)],
+                    [float(reading[keys == key].min()) for key in sorted(cells)],
                     float(np.mean([cells[key].mean(dtype=np.float64) for key in cells]))))
     return out
 
@@ -45,10 +48,11 @@ def test_candidates_equal_a_per_mask_reference(max_depth):
     ref = _reference(depth, masks, k, pose, 0.1, 4, max_depth)
     assert c.mask_index.tolist() == [r[0] for r in ref]
     assert c.area_px.tolist() == [r[1] for r in ref]
-    for a, (_m, _area, keys, tops, mean) in enumerate(ref):
-        got_keys, got_top = c.cells(a)
+    for a, (_m, _area, keys, tops, nearest, mean) in enumerate(ref):
+        got_keys, got_top, got_near = c.cells(a)
         assert got_keys.tolist() == keys
         assert got_top.tolist() == tops
+        assert got_near.tolist() == nearest
         assert c.mean_height[a] == pytest.approx(mean, abs=1e-6)
     rows, cols = rowcol_of(c.keys)
     for a in range(len(c)):

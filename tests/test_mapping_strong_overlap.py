@@ -19,7 +19,8 @@ def _cand(cols, height: float) -> TopDownCandidates:
     cols = np.asarray(list(cols))
     keys = keys_of(np.zeros(len(cols), np.int64), cols)
     return TopDownCandidates(mask_index=np.array([0]), offsets=np.array([0, len(keys)]), keys=keys,
-                             top=np.full(len(keys), height, np.float32), mean_height=np.array([height]),
+                             top=np.full(len(keys), height, np.float32), near=np.ones(len(keys), np.float32),
+                             mean_height=np.array([height]),
                              area_px=np.array([100]), bbox=np.array([[0, 0, cols.min(), cols.max()]]))
 
 

@@ -47,7 +47,7 @@ def mask_objects(frames: FrameSet, min_pixels: int) -> dict[tuple[int, int], int
         if seg is None or inst is None:
             continue
         flat = inst.ravel().astype(np.int64)
-        for m, mask in enumerate(seg.masks.reshape(len(seg.masks), -1)):
+        for m, mask in enumerate(seg.masks.reshape(len(seg.masks), flat.size)):  # a frame may hold no mask
             ids = flat[mask]
             if len(ids) >= min_pixels:
                 out[(frame.index, m)] = int(np.bincount(ids).argmax())

@@ -59,6 +59,7 @@ class MapBuilder:
 
         d = self.dictionary or InstanceDictionary(category_embeddings.shape[1], self.cfg)
         before, merges = len(d), 0
+        d = d.reliable_footprints(self.cfg.reliable_depth)
         if second_pass:
             d, merges = d.second_pass()
         d, continuous = d.merge_continuous()

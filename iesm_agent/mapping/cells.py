@@ -52,15 +52,19 @@ def group_ids(values: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray, np
     return distinct, inverse.reshape(-1), counts
 
 
-def union_max(keys_a: np.ndarray, top_a: np.ndarray, keys_b: np.ndarray,
-              top_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Mask OR of two sparse masks; a cell in both keeps the larger top height (m)."""
+def union_cells(keys_a: np.ndarray, top_a: np.ndarray, near_a: np.ndarray, keys_b: np.ndarray,
+                top_b: np.ndarray, near_b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Mask OR of two sparse masks with their per-cell values: a cell in both keeps the larger top
+    height (m) and the nearer reading depth (m)."""
     keys = np.concatenate([keys_a, keys_b])
     tops = np.concatenate([top_a, top_b])
+    near = np.concatenate([near_a, near_b])
     order = np.argsort(keys, kind="stable")
-    keys, tops = keys[order], tops[order]
+    keys, tops, near = keys[order], tops[order], near[order]
+    if not len(keys):
+        return keys, tops, near
     starts = run_starts(keys)
-    return keys[starts], np.maximum.reduceat(tops, starts) if len(keys) else tops
+    return keys[starts], np.maximum.reduceat(tops, starts), np.minimum.reduceat(near, starts)
 
 
 def intersections(keys_a: np.ndarray, owner_a: np.ndarray, keys_b: np.ndarray,

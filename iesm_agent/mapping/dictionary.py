@@ -2,14 +2,16 @@
 association-fusion pass (paper Sec. 3.1, "Instance Association" and "Instance Fusion") and the
 continuity merge of touching stretches of one object (not in the paper, `merge_continuous`).
 
-Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height,
+Each entry holds its top-down mask (sorted cell keys, see `cells`) with the per-cell top height
+and the per-cell depth of the nearest reading that placed the cell (how reliably it is placed),
 the embedding f (weighted mean of the fused candidate embeddings), the mean height h (m, weighted
 the same way), the weight w (number of fused observations) and its observations
 (frame index, mask index, mask area in pixels, mask score).
 
 Fusion of an entry with weight w and an observation of weight v (1 for a frame's candidate):
-mask OR (per-cell top = max), f <- (w f + v f_c) / (w + v), h likewise, w <- w + v. With v = 1
-these are the paper's equations; the second pass fuses whole entries with v = their weight.
+mask OR (per-cell top = max, nearest reading = min), f <- (w f + v f_c) / (w + v), h likewise,
+w <- w + v. With v = 1 these are the paper's equations; the second pass fuses whole entries with
+v = their weight.
 """
 
 from __future__ import annotations
@@ -18,7 +20,7 @@ import numpy as np
 
 from ..config import MappingConfig
 from .association import continuous_link, phi_geo, phi_sem, select_matches
-from .cells import dilate, intersections, union_max
+from .cells import dilate, intersections, rowcol_of, union_cells
 from .project import TopDownCandidates
 
 _EMPTY = np.zeros(0, np.int64)
@@ -31,6 +33,7 @@ class InstanceDictionary:
         self.cfg = cfg
         self.keys: list[np.ndarray] = []          # per entry: sorted cell keys
         self.tops: list[np.ndarray] = []          # per entry: top height (m) of each cell
+        self.near: list[np.ndarray] = []          # per entry: nearest reading's depth (m) of each cell
         self.observations: list[list[tuple[int, int, int, float]]] = []
         self._f = np.zeros((16, dim))             # embeddings
         self._w = np.zeros(16)                    # weights
@@ -57,8 +60,8 @@ class InstanceDictionary:
     def sizes(self) -> np.ndarray:
         return self._size[:len(self)]
 
-    def add(self, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-            bbox: np.ndarray, observations: list) -> int:
+    def add(self, keys: np.ndarray, top: np.ndarray, near: np.ndarray, f: np.ndarray, height: float,
+            weight: float, bbox: np.ndarray, observations: list) -> int:
         """Append a new entry; returns its index."""
         n = len(self)
         if n == len(self._w):
@@ -68,15 +71,17 @@ class InstanceDictionary:
             self._bbox = np.resize(self._bbox, (grow, 4))
         self.keys.append(keys)
         self.tops.append(top)
+        self.near.append(near)
         self.observations.append(list(observations))
         self._f[n], self._w[n], self._h[n], self._size[n], self._bbox[n] = f, weight, height, len(keys), bbox
         return n
 
-    def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, f: np.ndarray, height: float, weight: float,
-             bbox: np.ndarray, observations: list) -> None:
+    def fuse(self, i: int, keys: np.ndarray, top: np.ndarray, near: np.ndarray, f: np.ndarray, height: float,
+             weight: float, bbox: np.ndarray, observations: list) -> None:
         """Fuse an observation (or a whole entry) of weight `weight` into entry `i`."""
         w = self._w[i]
-        self.keys[i], self.tops[i] = union_max(self.keys[i], self.tops[i], keys, top)
+        self.keys[i], self.tops[i], self.near[i] = union_cells(self.keys[i], self.tops[i], self.near[i], keys, top,
+                                                               near)
         self._f[i] = (w * self._f[i] + weight * np.asarray(f)) / (w + weight)
         self._h[i] = (w * self._h[i] + weight * height) / (w + weight)
         self._w[i] = w + weight
@@ -118,10 +123,10 @@ class InstanceDictionary:
         match = select_matches(a, e, geo, sem, len(cands), self.cfg)
         target = np.empty(len(cands), np.int64)
         for c in range(len(cands)):
-            keys, top = cands.cells(c)
+            keys, top, near = cands.cells(c)
             obs = [(frame_index, int(cands.mask_index[c]), int(cands.area_px[c]),
                     float(scores[cands.mask_index[c]]))]
-            args = (keys, top, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
+            args = (keys, top, near, f[c], float(cands.mean_height[c]), 1.0, cands.bbox[c], obs)
             if match[c] >= 0:
                 self.fuse(int(match[c]), *args)
                 target[c] = match[c]
@@ -137,7 +142,8 @@ class InstanceDictionary:
         merges = 0
         for i in np.argsort(-self.weights, kind="stable"):
             m = link(self, out, i)
-            args = (self.keys[i], self.tops[i], self._f[i], self._h[i], self._w[i], self._bbox[i], self.observations[i])
+            args = (self.keys[i], self.tops[i], self.near[i], self._f[i], self._h[i], self._w[i], self._bbox[i],
+                    self.observations[i])
             if m >= 0:
                 out.fuse(int(m), *args)
                 merges += 1
@@ -178,3 +184,20 @@ class InstanceDictionary:
             total += merges
             if merges == 0:
                 return d, total
+
+    def reliable_footprints(self, max_depth: float | None) -> "InstanceDictionary":
+        """The dictionary with each entry's footprint cut to the cells some reading nearer than
+        `max_depth` (m) placed, when it has any; an entry with none (seen only from farther) keeps
+        every cell, so no instance is lost. Embeddings, heights, weights and observations (the
+        label and caption votes of every view) are unchanged. None: `self` unchanged."""
+        if max_depth is None:
+            return self
+        out = InstanceDictionary(self._f.shape[1], self.cfg)
+        for i in range(len(self)):
+            keep = self.near[i] <= max_depth
+            keys, top, near = ((self.keys[i], self.tops[i], self.near[i]) if not keep.any() else
+                               (self.keys[i][keep], self.tops[i][keep], self.near[i][keep]))
+            rows, cols = rowcol_of(keys)
+            out.add(keys, top, near, self._f[i], self._h[i], self._w[i],
+                    np.array([rows.min(), rows.max(), cols.min(), cols.max()]), self.observations[i])
+        return out

@@ -21,7 +21,9 @@ class TopDownCandidates:
 
     `mask_index` (A,) index of each candidate's mask in the frame's segmentation;
     `offsets` (A + 1,): candidate a owns `keys[offsets[a]:offsets[a + 1]]` (sorted cell keys, see
-    `cells`) and the matching `top` (per-cell highest point, m); `mean_height` (A,) m, the mean
+    `cells`) and the matching `top` (per-cell highest point, m) and `near` (per-cell nearest
+    reading's depth along the camera axis, m: how reliably the cell is placed, the sensor's noise
+    growing with depth); `mean_height` (A,) m, the mean
     over the candidate's cells of the per-cell mean point height; `area_px` (A,) mask pixels;
     `bbox` (A, 4) int64 global (row_min, row_max, col_min, col_max).
     """
@@ -30,6 +32,7 @@ class TopDownCandidates:
     offsets: np.ndarray
     keys: np.ndarray
     top: np.ndarray
+    near: np.ndarray
     mean_height: np.ndarray
     area_px: np.ndarray
     bbox: np.ndarray
@@ -37,10 +40,10 @@ class TopDownCandidates:
     def __len__(self) -> int:
         return len(self.mask_index)
 
-    def cells(self, a: int) -> tuple[np.ndarray, np.ndarray]:
-        """(keys, top) of candidate `a`."""
+    def cells(self, a: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(keys, top, near) of candidate `a`."""
         s, e = self.offsets[a], self.offsets[a + 1]
-        return self.keys[s:e], self.top[s:e]
+        return self.keys[s:e], self.top[s:e], self.near[s:e]
 
     def owners(self) -> np.ndarray:
         """Candidate index of every entry of `keys`."""
@@ -203,6 +206,9 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     sums = np.bincount(inverse, weights=z, minlength=len(groups))        # float64
     top = np.full(len(groups), -np.inf, np.float32)
     np.maximum.at(top, inverse, z)
+    near = np.full(len(groups), np.inf, np.float32)
+    # fmin: the unusable readings (NaN among them) fall in the "no depth" groups, dropped below
+    np.fmin.at(near, inverse, depth.ravel()[pix])
     group_k, group_cell = np.divmod(groups, n)
     has_depth = group_cell < img.n_box
     usable_px = np.bincount(group_k[has_depth], weights=n_pts[has_depth], minlength=k_all)
@@ -211,7 +217,7 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
     # one entry per (candidate, cell): candidate-major, cells row-major inside each candidate
     sel = np.flatnonzero(supported & keep[group_k])
     cell_k, box = group_k[sel], group_cell[sel]
-    top = top[sel]
+    top, near = top[sel], near[sel]
     cell_mean = sums[sel] / n_pts[sel]
     kept = np.flatnonzero(keep)
     remap = np.full(k_all, -1, np.int64)
@@ -230,4 +236,4 @@ def project_candidates(depth: np.ndarray, masks: np.ndarray, fx: float, fy: floa
         bbox[:, 2] = np.minimum.reduceat(c, first)
         bbox[:, 3] = np.maximum.reduceat(c, first)
     return TopDownCandidates(mask_index=kept.astype(np.int64), offsets=offsets, keys=keys_of(r, c), top=top,
-                             mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox)
+                             near=near, mean_height=mean_height, area_px=area_px[kept].astype(np.int64), bbox=bbox)
