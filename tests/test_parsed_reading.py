@@ -200,8 +200,8 @@ def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text
 
 @pytest.mark.parametrize("text, wanted", [
     ("we would like a glass of lemonade", "lemonade"),
-    ("I need to brew a pot of coffee", "coffee"),
-    ("boil some water for a mug of cocoa", "cocoa"),
+    ("let's prepare a jug of chai", "chai"),
+    ("heat milk for a mug of cocoa", "cocoa"),
 ])
 def test_a_vessel_that_counts_out_a_wished_portion_is_not_what_is_asked_for(text, wanted):
     structure = parse_request(normalise(text))
@@ -210,5 +210,5 @@ def test_a_vessel_that_counts_out_a_wished_portion_is_not_what_is_asked_for(text
 
 
 def test_a_vessel_already_somewhere_is_the_thing_to_go_to():
-    q = analyse_query("somebody put a mug of cocoa on the windowsill; take me to it")
+    q = analyse_query("somebody put a mug of cocoa on the windowsill; guide me there")
     assert q.targets.get("cup") == 1.0

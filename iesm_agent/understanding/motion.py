@@ -52,7 +52,7 @@ def is_destination(toks: list[str], i: int, n: int) -> bool:
 
 def strip_motion(toks: list[str]) -> list[str]:
     """`toks` without the motion phrases that only say where to go: a motion verb with its object,
-    a chained posture verb, its particle and destination preposition ("make your way over to")."""
+    a chained posture verb, its particle and destination preposition ("make your way across to")."""
     drop: set[int] = set()
     for i in range(len(toks)):
         if i not in drop and is_destination(toks, i, 1):

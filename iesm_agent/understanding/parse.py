@@ -32,7 +32,7 @@ _ACTIVITY_VERBS = frozenset({"take", "have"})
 #: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
 #: "make the bed"): what they make is no place to go
 _MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
-#: vessels that count out what the speaker wants ("a cup of tea"): the tea is wanted, not the cup
+#: vessels that count out what the speaker wants ("a jug of lemonade"): the lemonade is wanted
 _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
@@ -162,7 +162,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     """The structure of `text[at:]` as parsed, every sentence of it, at `text`'s character offsets."""
     doc = _batch.get(text[at:]) or _pipeline()(text[at:])  # (an empty doc is parsed again: the same)
     cuts = [(t.idx + at, (of := doc[_partitive(t)].head).idx + len(of) + at) for t in doc if _wished_portion(t)]
-    for start, end in reversed(cuts):  # "I'd love a cup of tea": read as "a tea"
+    for start, end in reversed(cuts):  # "we'd like a jug of lemonade": read as "a lemonade"
         text = text[:start] + text[end:]
     if cuts:
         return _parse_sentences(text, at)
@@ -192,8 +192,8 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
 
 
 def _wished_portion(token) -> bool:
-    """True for a vessel that counts out what the speaker wants or makes ("I'd love a cup of tea",
-    "water for a mug of cocoa"); not for one that is there already ("someone left a cup of tea")."""
+    """True for a vessel that counts out what the speaker wants or makes ("we'd like a jug of juice",
+    "milk for a mug of cocoa"); not for one that is there already ("a guest left a jug of juice")."""
     wished = token.dep_ == "dobj" and (_made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL
                                                            for c in token.head.children))
     return token.lemma_ in _PORTIONS and _partitive(token) is not None and (
@@ -202,7 +202,7 @@ def _wished_portion(token) -> bool:
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
     """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
-    "leave"/"exit" or the noun after "out of" ("take me out of the bathroom"); else None."""
+    "leave"/"exit" or the noun after "out of" ("lead us out of this garage"); else None."""
     return next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
@@ -307,7 +307,7 @@ def _telegraphic_target(root) -> int:
 
 def _copula_attribute(root) -> int | None:
     """The noun the copula `root`, or one joined to it, names ("this is a kettle", "it's on the shelf
-    and is the jar"; "it is the one nearest the oven": the stand-in, for its antecedent), or None."""
+    and is the jar"; "this is the one without a lid": the stand-in, for its antecedent), or None."""
     return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                  for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
 

@@ -21,9 +21,9 @@ _THEME_WEIGHT = 0.35
 #: word sequences after which the query says what the target is NOT
 _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
-#: words that introduce a part or feature of the target ("with the red cover")
+#: words that introduce a part or feature of the target ("with the torn flap")
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
-#: words that open the request proper after a preamble ("I'm chilly, bring me to the ...")
+#: words that open the request proper after a preamble ("I'm chilly, lead me towards ...")
 _REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
 #: share of the request's function evidence a preamble's function evidence gets
 _PREAMBLE_SCALE = 0.5
@@ -36,7 +36,7 @@ _KIN_SCALE = 0.8
 _OWN_PURPOSE = 0.96
 #: of such a purpose, only its most typical kinds (the first six) are kin
 _TYPICAL = 0.9
-#: prepositions that introduce the room an object is in ("the sink in the scullery")
+#: prepositions that introduce the room an object is in ("the tap in the pantry")
 _PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
@@ -193,7 +193,7 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
                     described: frozenset[int], place_ok: bool = False) -> bool:
     """True when the words of `span` modify a noun other than the target ("beside the tall wardrobe",
-    "hang my wet coat"); a part of the target ("the mug with the blue handle"), the target named again
+    "hang my wet coat"); a part of the target ("the jar with the green handle"), the target named again
     and a predicate ("it is white") stay the target's, and with `place_ok` so does a place phrase.
     `described` holds the offsets of attribute words ("in brown leather": a description)."""
     word = structure.index_at(surface[span.end - 1].at)  # the parse's word under the span's last token
@@ -232,7 +232,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     where to go or what to do ("take me to", "head over to"), with what follows an exclusion
     marker read apart and what comes before the request phrase kept as the preamble."""
     structure = parse_request(normalise(lex.respell(text)))
-    corrected = structure.text  # without the vessels of a wished portion ("a cup of tea": a tea)
+    corrected = structure.text  # without the vessels of a wished portion ("a jug of juice": a juice)
     tokens = _request_tokens(lex, corrected, structure.request)
     marker = _exclusion_at(tokens)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
@@ -319,7 +319,7 @@ def _named(info) -> bool:
 
 def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     """True when surface token `index` is a noun the parse puts under the target noun, not the head
-    itself ("the red book with gold on the cover"): a use it hints at describes the thing rather than
+    itself ("the grey file with a tag on the spine"): a use it hints at describes the thing rather than
     says what to do (a head noun that is a cue names a class of things: a perch to sit on)."""
     structure = reading.structure
     word = structure.index_at(reading.surface[index].at)

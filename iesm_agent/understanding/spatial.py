@@ -216,7 +216,7 @@ class _Reader:
 
     def located_by_pronoun(self) -> int | None:
         """Start of the category span of what the cue places relative to the target when its object
-        only points back ("there is a hamper [to its left]"): the noun the phrase hangs on, or the
+        only points back ("there is a crate [to its left]"): the noun the phrase hangs on, or the
         subject or object of its verb; else None."""
         below, st = self.cue_object(), self.structure
         if below is None or not any(self.points_back(k) for k in below) \
@@ -288,7 +288,7 @@ class _Reader:
 
     def turned_to(self, k: int | None) -> bool:
         """True when the parsed side word `k` is what a verb of turning takes, directly or through
-        "to" or "towards" ("facing left", "turned towards the right"; not "facing the desk on the right")."""
+        "to" or "towards" ("facing left", "turned towards the right"; not "facing the crate on the right")."""
         st = self.structure
         head = st.words[k].head if k is not None else None
         if head is not None and st.words[head].text.lower() in ("to", "towards", "toward"):
@@ -511,7 +511,7 @@ class _Reader:
 
     def viewer_landmark(self, rel: Relation, pos: int) -> None:
         """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
-        takes it; at its front, foot or end, as what the viewer faces ("from the foot of the bed")."""
+        takes it; at its front, foot or end, as what the viewer faces ("standing at the cot's foot")."""
         objects = self.cue_objects()
         if not self.landmark(rel, pos) or self.out.facing:
             return
