@@ -268,3 +268,18 @@ def test_a_neighbours_label_seen_through_the_door_is_not_cut_out_as_a_room():
     assert len(_label_parts(mask, labels, None, 2, 0.05, config, lambda: Neighbours(near, distance, weak))) == 2
     distance[90:] = 1.0                         # touching the room (no wall): a piece of it
     assert len(_label_parts(mask, labels, None, 2, 0.05, config, lambda: Neighbours(near, distance, strong))) == 2
+
+
+def test_an_instance_outside_every_room_takes_the_nearest_room_within_reach():
+    from iesm_agent.rooms.scene import instance_rooms
+    layout = grid_layout(2, 2)
+    scene = segment_rooms(layout.scene, noisy_labels(layout, 1.0))
+    bed = next(i for i in scene.instances if i.label == "bed")
+    flat, ids, _ = scene.occupancy.entries()
+    room_map = scene.room_map.copy()
+    room_map.ravel()[flat[ids == bed.id]] = -1       # the bed's mapped cells fall outside the room
+    assert bed.id not in instance_rooms(scene, room_map)
+    assert bed.id not in instance_rooms(scene, room_map, reach=0.5)   # its edge is one cell from the room
+    assert instance_rooms(scene, room_map, reach=1.5)[bed.id] == bed.room_id
+    others = {k: v for k, v in instance_rooms(scene, room_map, reach=1.5).items() if k != bed.id}
+    assert others == {k: v for k, v in instance_rooms(scene, room_map).items()}   # the others keep theirs

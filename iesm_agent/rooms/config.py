@@ -36,6 +36,9 @@ class RoomConfig(BaseModel):
     `object_vote_weight` x object votes); off, the paper's majority per-cell label.
     `split_smoothing`, with the other split settings, was chosen on tuning seeds 0-4 (walled and
     open-plan, realistic profile).
+    An instance none of whose footprint cells lies in a room (a window in the outer wall, a lamp
+    whose mapped cells fall just outside the room) takes the room nearest to its footprint when that
+    is within `instance_reach` m; 0 leaves it without a room.
     """
 
     model_config = ConfigDict(extra="forbid")
@@ -59,3 +62,4 @@ class RoomConfig(BaseModel):
     split_smoothing: float = Field(0.5, ge=0)
     split_gain: float = Field(0.1, ge=0, le=1)
     object_vote_weight: float = Field(0.5, ge=0)
+    instance_reach: float = Field(0.5, ge=0)

@@ -10,7 +10,7 @@ from ..store.model import Room, SceneMap
 from .config import RoomConfig
 from .labels import CellLabels, object_votes
 from .outline import cells_polygon
-from .segment import RoomSegmentation, segment_room_map
+from .segment import RoomSegmentation, nearest_room, segment_room_map
 
 
 def structural_masks(scene: SceneMap, config: RoomConfig = RoomConfig()) -> tuple[np.ndarray, np.ndarray]:
@@ -38,19 +38,30 @@ def room_polygon(mask: np.ndarray, scene: SceneMap) -> list[tuple[float, float]]
     return [(round(ox + float(x) * s, 3), round(oy + float(y) * s, 3)) for x, y in outline.tolist()]
 
 
-def instance_rooms(scene: SceneMap, room_map: np.ndarray) -> dict[int, int]:
-    """Instance id -> room id holding most of its footprint cells (instances outside rooms omitted)."""
+def instance_rooms(scene: SceneMap, room_map: np.ndarray, reach: float = 0.0) -> dict[int, int]:
+    """Instance id -> room id holding most of its footprint cells; an instance with no cell in a
+    room takes the room nearest to its footprint when that is within `reach` cells (else omitted)."""
     flat, ids, _ = scene.occupancy.entries()
     rooms = room_map.ravel()[flat]
     inside = rooms >= 0
-    if not inside.any():
+    if not (room_map >= 0).any():
         return {}
     pairs, counts = np.unique(np.stack([ids[inside], rooms[inside]]), axis=1, return_counts=True)
     order = np.lexsort((-counts, pairs[0]))
     first = np.ones(len(order), bool)
     first[1:] = pairs[0][order][1:] != pairs[0][order][:-1]
     best = pairs[:, order[first]]
-    return dict(zip(best[0].tolist(), best[1].tolist()))
+    found = dict(zip(best[0].tolist(), best[1].tolist()))
+    outside = ~np.isin(ids, best[0])
+    if reach > 0 and outside.any():
+        distance, nearest = nearest_room(room_map)
+        cell_distance, cell_room = distance.ravel()[flat[outside]], nearest.ravel()[flat[outside]]
+        for instance in np.unique(ids[outside]):
+            own = np.flatnonzero(ids[outside] == instance)
+            closest = own[np.argmin(cell_distance[own])]
+            if cell_distance[closest] <= reach:
+                found[int(instance)] = int(cell_room[closest])
+    return found
 
 
 def segment_scene(scene: SceneMap, cell_labels: CellLabels,
@@ -75,7 +86,7 @@ def segment_rooms(scene: SceneMap, cell_labels: CellLabels, config: RoomConfig =
     seg = segment_scene(scene, cell_labels, config)
     rooms = [Room(id=i, label=label, polygon=room_polygon(seg.room_map == i, scene))
              for i, label in enumerate(seg.labels)]
-    room_of = instance_rooms(scene, seg.room_map)
+    room_of = instance_rooms(scene, seg.room_map, config.instance_reach / scene.grid.cell_size)
     instances = [inst.model_copy(update={"room_id": room_of.get(inst.id),
                                          "room_label": seg.labels[room_of[inst.id]] if inst.id in room_of else None})
                  for inst in scene.instances]

@@ -291,7 +291,7 @@ class RoomsAround:
         others = np.where(window == room, -1, window)
         if not (others >= 0).any():
             return None
-        distance, nearest = _nearest_room(others)
+        distance, nearest = nearest_room(others)
         crop = (slice(r0 - w0, r1 - w0), slice(c0 - v0, c1 - v0))
         distance, nearest = distance[crop], nearest[crop]
         rooms = _present(np.where(distance <= reach, nearest, -1))
@@ -352,14 +352,14 @@ def _fill_nearest(room_map: np.ndarray, anywhere: np.ndarray, near: np.ndarray, 
     unassigned = room_map < 0
     if unassigned.all() or not unassigned.any():
         return room_map
-    distance, nearest = _nearest_room(room_map)
+    distance, nearest = nearest_room(room_map)
     fill = unassigned & (anywhere | (near & (distance <= max_cells)))
     out = room_map.copy()
     out[fill] = nearest[fill]
     return out
 
 
-def _nearest_room(room_map: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def nearest_room(room_map: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(distance in cells, id) of the nearest cell with a room (id >= 0) of `room_map` (h, w), for
     every cell (Euclidean, OpenCV's 5x5 mask; a room's own cells: 0 and their id). Needs a room cell."""
     import cv2
