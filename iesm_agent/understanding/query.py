@@ -417,11 +417,9 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
     """Kinds that serve the same purpose as a named category (chair -> sofa, stool, bench): the
     most typical kinds of the affordance entries whose first kinds include it, 0.8 x their weight."""
     kin: dict[str, float] = {}
-    for entry in lex.affordances:
-        if any(entry.get(c, 0.0) >= _OWN_PURPOSE for c in named):
-            for concept, weight in entry.items():
-                if weight >= _TYPICAL:
-                    kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
+    for concept, weight in ((c, w) for entry in lex.affordances if any(entry.get(n, 0.0) >= _OWN_PURPOSE for n in named)
+                            for c, w in entry.items() if w >= _TYPICAL):
+        kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
     return kin
 
 
@@ -439,24 +437,14 @@ def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop
 def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
     """Token positions of relative clauses about a landmark whose preposition is stranded: from
     the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
-    out: set[int] = set()
-    for k, token in enumerate(surface):
-        if token in STRANDABLE and is_stranded(surface, k + 1, finals):
-            start = clause_landmark(categories, surface, k)
-            if start is not None:
-                out.update(range(start, k + 1))
-    return out
+    starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
+              if token in STRANDABLE and is_stranded(surface, k + 1, finals)}
+    return {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}
 
 
 def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
     """Rightmost specific category span inside the target phrase; not an attribute word before an
     abstract noun ("the glass object": glass is the material, not a drinking glass)."""
-    head = None
-    for s in spans:
-        if s.end > end:
-            break
-        modifier = (any(k in ATTRIBUTE_KINDS for k, _ in s.kinds) and s.end < len(lemmas)
-                    and lemmas[s.end] in abstract)
-        if set(s.values("cat")) - _UNSPECIFIC and not s.has("gen") and not modifier:
-            head = s
-    return head
+    heads = [s for s in spans if s.end <= end and set(s.values("cat")) - _UNSPECIFIC and not s.has("gen")
+             and not (set(lemmas[s.end:s.end + 1]) & abstract and any(k in ATTRIBUTE_KINDS for k, _ in s.kinds))]
+    return heads[-1] if heads else None
