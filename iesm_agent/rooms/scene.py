@@ -47,21 +47,23 @@ def instance_rooms(scene: SceneMap, room_map: np.ndarray, reach: float = 0.0) ->
     if not (room_map >= 0).any():
         return {}
     pairs, counts = np.unique(np.stack([ids[inside], rooms[inside]]), axis=1, return_counts=True)
-    order = np.lexsort((-counts, pairs[0]))
-    first = np.ones(len(order), bool)
-    first[1:] = pairs[0][order][1:] != pairs[0][order][:-1]
-    best = pairs[:, order[first]]
+    best = pairs[:, _first_of_each(pairs[0], -counts)]
     found = dict(zip(best[0].tolist(), best[1].tolist()))
     outside = ~np.isin(ids, best[0])
     if reach > 0 and outside.any():
-        distance, nearest = nearest_room(room_map)
-        cell_distance, cell_room = distance.ravel()[flat[outside]], nearest.ravel()[flat[outside]]
-        for instance in np.unique(ids[outside]):
-            own = np.flatnonzero(ids[outside] == instance)
-            closest = own[np.argmin(cell_distance[own])]
-            if cell_distance[closest] <= reach:
-                found[int(instance)] = int(cell_room[closest])
+        distance, nearest = (a.ravel()[flat[outside]] for a in nearest_room(room_map))
+        closest = _first_of_each(ids[outside], distance)
+        within = distance[closest] <= reach
+        found.update(zip(ids[outside][closest][within].tolist(), nearest[closest][within].tolist()))
     return found
+
+
+def _first_of_each(ids: np.ndarray, key: np.ndarray) -> np.ndarray:
+    """Indices of the entry with the smallest `key` for each distinct value of `ids`."""
+    order = np.lexsort((key, ids))
+    first = np.ones(len(order), bool)
+    first[1:] = ids[order][1:] != ids[order][:-1]
+    return order[first]
 
 
 def segment_scene(scene: SceneMap, cell_labels: CellLabels,

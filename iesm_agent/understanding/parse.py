@@ -194,10 +194,9 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
 def _wished_portion(token) -> bool:
     """True for a vessel that counts out what the speaker wants or makes ("we'd like a jug of juice",
     "milk for a mug of cocoa"); not for one that is there already ("a guest left a jug of juice")."""
-    wished = token.dep_ == "dobj" and (_made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL
-                                                           for c in token.head.children))
-    return token.lemma_ in _PORTIONS and _partitive(token) is not None and (
-        wished or token.dep_ == "pobj" and token.head.lower_ == "for")
+    return token.lemma_ in _PORTIONS and _partitive(token) is not None and (  # every word of a parse: vessels first
+        token.dep_ == "pobj" and token.head.lower_ == "for" or token.dep_ == "dobj" and (
+            _made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL for c in token.head.children)))
 
 
 def _left_place(doc, request: tuple[int, int], at: int) -> int | None:

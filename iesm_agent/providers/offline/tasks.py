@@ -393,10 +393,11 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
 
 def _text_overlap(q: QueryInfo, records: list[Record]) -> list[float]:
     """Share of the request's content words each candidate's label, caption and tags say; the
-    words naming a landmark do not count for a candidate whose own label says them (a door is not
-    "by the door", a caption naming the door is)."""
+    words naming a landmark do not count for a candidate whose own label says them (a kettle is no
+    evidence of being beside a kettle; a caption that names one is)."""
     landmark = frozenset(stem(w) for c in q.landmarks for w in c.split())
-    return [len((q.overlap - landmark if landmark & _label_stems(r.label) else q.overlap) & r.stems) / len(q.overlap)
+    unnamed = q.overlap - landmark
+    return [len((unnamed if landmark & _label_stems(r.label) else q.overlap) & r.stems) / len(q.overlap)
             for r in records]
 
 
