@@ -26,7 +26,7 @@ _CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in 
     "from": "from", "with": "with", "opposite": "opposite|across from|across"}.items()
     for cue in cues.split("|")}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
-#: sides with an axis of their own, whoever looks ("the north side of the desk", "the west one")
+#: sides with an axis of their own, whoever looks ("the north side of the desk", "the west crate")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
                 for a in ("north", "south") for b in ("east", "west")})
@@ -524,7 +524,7 @@ class _Reader:
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
         ordinal, after a verb of seeing or opening a clause, where the viewer is ("seen from the
-        settee", "From the doorway, ..."; not "a pipe runs from the boiler to the sink")."""
+        settee", "From the pantry arch, ..."; not "a pipe runs from the boiler to the sink")."""
         if self.pending_ordinal is None:
             st, k = self.structure, self.cue_word
             if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING | _LOOKING or self.opens_clause(k)):
