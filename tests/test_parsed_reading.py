@@ -198,6 +198,14 @@ def test_one_of_them_resolves_them_to_the_plural_named_as_subject_or_object(text
     assert q.targets.get(kind) == 1.0
 
 
+@pytest.mark.parametrize("text, kind", [
+    ("There are three vases on the shelves. I want the one on the left.", "vase"),
+    ("we have two lamps on the side tables; take me to the one by the window", "lamp"),
+])
+def test_a_later_one_stands_for_the_things_introduced_not_for_what_they_stand_on(text, kind):
+    assert analyse_query(text).targets.get(kind) == 1.0
+
+
 @pytest.mark.parametrize("text, wanted", [
     ("we would like a glass of lemonade", "lemonade"),
     ("let's prepare a jug of chai", "chai"),

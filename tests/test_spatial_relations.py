@@ -415,6 +415,16 @@ def test_a_one_the_relation_takes_is_another_of_the_targets_kind(room, query, be
     assert spatial(room, query)[0] == best
 
 
+def test_a_landmark_of_the_targets_own_kind_is_told_apart_by_its_attributes(tmp_path):
+    # three green chairs in a row and a black one after them: only the last green one is by it;
+    # sharing the landmark's name ("chair") makes no chair "by the chair" on its own
+    objects = [box(i, "chair", (float(i), 1.0, 0.45), (0.45, 0.45, 0.9), tags={"color": "green"}) for i in (1, 2, 3)]
+    objects.append(box(4, "chair", (4.0, 1.0, 0.45), (0.45, 0.45, 0.9), tags={"color": "black"}))
+    store = make_store(tmp_path, objects)
+    assert spatial(store, "the green chair beside the black one")[0] == 3
+    assert spatial(store, "a green chair next to the black chair")[0] == 3
+
+
 def test_the_viewer_stands_in_the_targets_own_room_not_every_room_of_its_type(tmp_path):
     # two bedrooms: the viewer looks at the near bed from the middle of its own room (looking
     # north, left is west), not from between both rooms

@@ -383,6 +383,8 @@ def _antecedent(doc, index: int) -> int:
         return index
     before = list(reversed(doc[:index]))
     plural = next((t.i for t in before if t.tag_ in ("NNS", "NNPS")), None)  # "of the three pillows, the one ..."
+    while plural is not None and doc[plural].dep_ == "pobj" and doc[plural].head.head.tag_ in ("NNS", "NNPS"):
+        plural = doc[plural].head.head.i  # "two lamps on the tables ... the one": the lamps the tables place
     if plural is not None:
         return plural
     if any(doc[index].children):  # "the leather one": of a kind named some other way

@@ -257,8 +257,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         lm = marks[0]
         gap = geo.xy_gap(tb, lm) + 0.25 * geo.center_distance(tb, lm)
         gap = np.where(tb.ids[:, None] == lm.ids[None, :], np.inf, gap).min(axis=1)
-        if kind == "near":  # a "bed curtain" is by the bed whatever the geometry says
-            named_after = np.array([any(set(c.split()) <= scene.label_words[t] for c in rel.landmarks[0])
+        if kind == "near":  # a "bed curtain" is by the bed whatever the geometry says; a chair is
+            # not by a chair for its name alone: the label must say more than the landmark's name
+            named_after = np.array([any(set(c.split()) < scene.label_words[t] for c in rel.landmarks[0])
                                     for t in targets], bool)
             return np.where(named_after, 1.0, np.exp(-gap / geo.NEAR_GAP))
         return _rank_score(-gap if kind == "closest" else gap)
