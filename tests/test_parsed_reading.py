@@ -189,6 +189,12 @@ def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
     assert structure.excluded == (0, len("Not the kettle on the hob, "))
 
 
+def test_a_one_that_a_later_exclusion_sets_apart_is_of_the_kind_ruled_out():
+    info = analyse_query("the oak one, not the pine wardrobe")
+    assert info.targets.get("wardrobe") == 1.0 and ("material", "wood") in info.attrs
+    assert not analyse_query("the red thing, not the lamp").named  # "thing" names no kind: nothing to borrow
+
+
 @pytest.mark.parametrize("text, kind", [
     ("In the study there are red cushions lying by the lamps. Lead me to one of them.", "pillow"),
     ("Which plates are on the kitchen shelves? Pick one of them for me.", "plate"),

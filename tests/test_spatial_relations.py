@@ -451,3 +451,60 @@ def test_the_viewer_can_sit_or_stand_at_a_landmark(tmp_path, query, best):
               box(5, "lamp", (3.4, 0.5, 0.8), (0.3, 0.3, 0.4), room="living room"),
               box(6, "tv", (2.0, 4.0, 1.0), (1.2, 0.1, 0.7), room="living room")]
     assert spatial(make_store(tmp_path, lounge), query)[0] == best
+
+
+# An open-plan floor: a work room and a studio (both offices to the lexicon), a kitchen corner
+# with two stools and a fridge, and a dining table beside a small round garden table.
+FLOOR = [
+    box(1, "chair", (1.0, 1.0, 0.45), (0.5, 0.5, 0.9), room="work room", caption="A grey conference chair."),
+    box(2, "chair", (2.5, 1.0, 0.45), (0.5, 0.5, 0.9), room="work room", caption="A grey conference chair."),
+    box(3, "tv", (3.4, 1.0, 1.2), (0.05, 1.2, 0.7), room="work room", caption="A large display on the wall."),
+    box(4, "chair", (6.0, 1.0, 0.45), (0.5, 0.5, 0.9), room="studio", caption="A black swivel office chair."),
+    box(5, "monitor", (6.3, 1.0, 0.9), (0.1, 0.5, 0.4), room="studio", caption="A computer screen."),
+    box(6, "stool", (1.0, 5.0, 0.4), (0.4, 0.4, 0.8), room="kitchen", caption="A tall bar stool."),
+    box(7, "stool", (2.0, 5.0, 0.4), (0.4, 0.4, 0.8), room="kitchen", caption="A tall bar stool."),
+    box(8, "refrigerator", (2.9, 5.0, 0.9), (0.7, 0.7, 1.8), room="kitchen"),
+    box(9, "table", (6.0, 5.0, 0.38), (1.6, 0.9, 0.75), room="kitchen", caption="A long oak dining table."),
+    box(10, "chair", (6.0, 5.8, 0.45), (0.5, 0.5, 0.9), room="kitchen",
+        caption="A wooden chair with a green seat cushion."),
+    box(11, "table", (9.0, 5.0, 0.36), (0.6, 0.6, 0.72), room="kitchen", caption="A small round garden table."),
+    box(12, "chair", (9.0, 5.6, 0.45), (0.5, 0.5, 0.9), room="kitchen", caption="A folding wooden chair."),
+    box(13, "pillow", (1.0, 9.0, 0.5), (0.4, 0.3, 0.2), room="kitchen", tags={"color": "green"}),
+    box(14, "chair", (1.8, 9.0, 0.45), (0.5, 0.5, 0.9), room="kitchen", caption="A plain wooden chair."),
+]
+
+
+@pytest.fixture(scope="module")
+def floor(tmp_path_factory):
+    return make_store(tmp_path_factory.mktemp("floor"), FLOOR)
+
+
+@pytest.mark.parametrize("query, best", [
+    # a class noun ranks every kind it names; the words before it narrow them when some say them
+    ("the seat nearest the fridge", 7),
+    ("the bar seat closer to the fridge", 7),
+    ("which seat is farthest from the fridge", 12),
+    # the room as the map names it, not every room of its type
+    ("the chair closest to the screen in the work room", 2),
+    # a landmark named more finely than the map labels it: the one whose own words say the rest
+    ("a seat at the dining table", 10),
+    # a part the target's caption names satisfies "with" though a loose one lies elsewhere
+    ("the seat with a green cushion", 10),
+])
+def test_class_nouns_rooms_and_landmarks_named_in_full(floor, query, best):
+    assert spatial(floor, query)[0] == best
+
+
+@pytest.mark.parametrize("text, target, kind, landmark", [
+    ("the stool nearer the fridge", ("stool",), "closest", ("refrigerator",)),  # nearness without "to"
+    ("lamp nearest the door", ("lamp",), "closest", ("door",)),
+    ("table nearest to the sofa", ("table",), "closest", ("sofa",)),  # a noun opening a fragment is no verb
+])
+def test_a_word_of_nearness_takes_its_noun_directly(text, target, kind, landmark):
+    q = parse_query(text)
+    assert q.target == target and [(r.kind, r.landmarks) for r in q.relations] == [(kind, [landmark])]
+
+
+def test_a_colour_before_a_compound_describes_the_target():
+    q = parse_query("the grey conference seat by the screen")
+    assert q.attrs == (("color", "gray"),) and q.modifiers == frozenset({"conference"})

