@@ -47,7 +47,11 @@ class MappingConfig(BaseModel):
     the cells some reading nearer than this placed, when it has any (an instance seen only from
     farther keeps every cell); every view still votes for its label and caption
     (`InstanceDictionary.reliable_footprints`): the simulator's depth noise grows as z^2
-    (`sim/sensor.py`), so a far view's cells stray from its object."""
+    (`sim/sensor.py`), so a far view's cells stray from its object. `size_prior_temperature` (None =
+    off; `paper()` and `uncleaned()` keep it off) and `size_prior_floor` (nats, <= 0): each instance's
+    label weighs the cosine of its embedding with each category over this temperature plus the
+    log-likelihood of its measured footprint (m^2) and top height (m) under the category's real-world
+    size range, floored (`mapping.plausibility`)."""
 
     model_config = ConfigDict(extra="forbid")
 
@@ -102,6 +106,10 @@ class MappingConfig(BaseModel):
     # the default (docs/results.md). At 4 m the simulator's depth noise, 0.0028 z^2 m (`sim/realism.py`), is
     # 4.5 cm, about a cell.
     reliable_depth: Optional[float] = Field(None, gt=0)
+    # label plausibility from the instance's measured footprint and top height (mapping/plausibility.py;
+    # issue 29, mislabelled targets): None = off
+    size_prior_temperature: Optional[float] = Field(None, gt=0)
+    size_prior_floor: float = Field(-4.0, le=0)
 
     @classmethod
     def paper(cls, **values: Any) -> "MappingConfig":
@@ -114,7 +122,8 @@ class MappingConfig(BaseModel):
         """Our association as before issue 29 (strong-overlap link at 0.7) on uncleaned geometry
         (every mask pixel with depth counts, every cell)."""
         return cls(**{"mask_erode_px": 0, "depth_edge_jump": None, "min_cell_points": 1, "depth_smooth_px": 0,
-                      "top_fill_max_cos": None, "reliable_depth": None, "delta_geo_strong": 0.7, **values})
+                      "top_fill_max_cos": None, "reliable_depth": None, "size_prior_temperature": None,
+                      "delta_geo_strong": 0.7, **values})
 
 
 class RetrievalConfig(BaseModel):
