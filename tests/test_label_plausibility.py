@@ -1,6 +1,6 @@
 """Label plausibility from measured geometry (MappingConfig.size_prior_temperature,
 `mapping.plausibility`): a small item whose masks look a little more like a coffee table than a cup
-is labelled cup when the prior is on and coffee table when it is off; a coffee table's own size keeps
+is labelled cup when the prior is on (the default) and coffee table when it is off; a coffee table's own size keeps
 its label; a category without a prior is never pushed down; the evaluation ranks an instance's own
 label first."""
 
@@ -40,8 +40,8 @@ LOOKS_LIKE_A_TABLE = [0.62, 0.58, 0.0]  # cosine 0.73 with coffee table, 0.68 wi
 
 def test_a_cup_sized_item_on_a_counter_is_a_cup_with_the_prior_and_what_its_masks_say_without():
     small_high = (2, 0.95, LOOKS_LIKE_A_TABLE)  # 2 x 2 cells of 5 cm: 0.01 m^2, top at 0.95 m
-    assert _labels(MappingConfig(), [small_high]) == ["coffee table"]
-    assert _labels(MappingConfig(size_prior_temperature=0.035), [small_high]) == ["cup"]
+    assert _labels(MappingConfig(size_prior_temperature=None), [small_high]) == ["coffee table"]
+    assert _labels(MappingConfig(), [small_high]) == ["cup"]
 
 
 def test_a_coffee_table_sized_instance_keeps_its_label_and_paper_rules_keep_the_prior_off():
