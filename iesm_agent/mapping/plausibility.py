@@ -19,8 +19,8 @@ footprint = the object's plan-view area (m^2), top = the height of its highest p
 a high shelf). Sources: typical furniture and fitting dimensions as given by standard references
 (Neufert, *Architects' Data*; EN 1116 kitchen worktops 0.85-0.95 m; EN 527-1 office desks about
 0.72-0.76 m; DIN 18101 door leaves about 2.0 m high; ceilings 2.4-2.7 m), and the sizes of common
-household items; docs/internals.md compares them with the footprints of the IESM paper's published
-maps. Heights are measured above z = 0, the floor of the map's world frame.
+household items; `scripts/published_footprints.py` checks the footprint ranges against the IESM paper's
+published maps (docs/results.md). Heights are measured above z = 0, the floor of the map's world frame.
 """
 
 from __future__ import annotations
