@@ -48,10 +48,10 @@ class MappingConfig(BaseModel):
     farther keeps every cell); every view still votes for its label and caption
     (`InstanceDictionary.reliable_footprints`): the simulator's depth noise grows as z^2
     (`sim/sensor.py`), so a far view's cells stray from its object. `size_prior_temperature` (None =
-    off; on by default at 0.035, `paper()` and `uncleaned()` turn it off) and `size_prior_floor` (nats, <= 0): each instance's
-    label weighs the cosine of its embedding with each category over this temperature plus the
-    log-likelihood of its measured footprint (m^2) and top height (m) under the category's real-world
-    size range, floored (`mapping.plausibility`)."""
+    off; on by default at 0.035, `paper()` and `uncleaned()` turn it off) and `size_prior_floor` (nats,
+    <= 0): each instance's label weighs the cosine of its embedding with each category over this
+    temperature plus the log-likelihood of its measured footprint (m^2) and top height (m) under the
+    category's real-world size range, floored (`mapping.plausibility`)."""
 
     model_config = ConfigDict(extra="forbid")
 

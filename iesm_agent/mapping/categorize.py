@@ -20,8 +20,3 @@ def ranked_labels(z: np.ndarray, categories: list[str], n_alt: int = 4) -> list[
     if z.shape[1] != len(categories):
         raise ValueError(f"{len(categories)} categories but {z.shape[1]} category embeddings")
     return [(categories[row[0]], [categories[j] for j in row[1:1 + n_alt]]) for row in category_ranking(z)]
-
-
-def categorize(f: np.ndarray, e: np.ndarray, categories: list[str], n_alt: int = 4) -> list[tuple[str, list[str]]]:
-    """(label, next `n_alt` labels) per instance from Z = F E^T over the category list."""
-    return ranked_labels(category_scores(f, e), categories, n_alt)
