@@ -78,8 +78,10 @@ def test_a_second_view_with_scattered_embedding_fuses_but_a_cup_on_the_table_sta
 def test_settings_can_switch_the_link_off():
     off = {"mapping.delta_geo_strong": None, "mapping.continuity_gap": None}
     assert load_settings(overrides=off).mapping == MappingConfig.paper(mask_erode_px=1, depth_smooth_px=7,
-                                                                       top_fill_max_cos=0.3)
-    off |= {"mapping.mask_erode_px": 0, "mapping.depth_smooth_px": 0, "mapping.top_fill_max_cos": None}
+                                                                       top_fill_max_cos=0.3,
+                                                                       size_prior_temperature=0.035)
+    off |= {"mapping.mask_erode_px": 0, "mapping.depth_smooth_px": 0, "mapping.top_fill_max_cos": None,
+            "mapping.size_prior_temperature": None}
     assert load_settings(overrides=off).mapping == MappingConfig.paper()
     assert MappingConfig.paper(delta_sem=0.8).delta_sem == 0.8
     with pytest.raises(ValidationError):

@@ -146,13 +146,27 @@ def prediction_from_map(scene: SceneMap, ctx: EvalContext) -> Prediction:
     ids = np.array([inst.id for inst in scene.instances], np.int64)
     j = len(ctx.categories)
     if scene.embeddings is not None and scene.embeddings.shape[1] == ctx.e.shape[1]:
-        ranking = category_ranking(category_scores(scene.embeddings, ctx.e))
+        ranking = stated_first(category_ranking(category_scores(scene.embeddings, ctx.e)), scene, ctx.categories)
     else:
         index = {c.lower(): k for k, c in enumerate(ctx.categories)}
         first = np.array([index.get(inst.label.lower(), -1) for inst in scene.instances], np.int64)
         ranking = np.full((len(ids), j), -1, np.int64)
         ranking[:, 0] = first
     return Prediction(ids, ranking, masks_in_grid(scene.occupancy, scene.grid, ctx.gt.grid))
+
+
+def stated_first(ranking: np.ndarray, scene: SceneMap, categories: list[str]) -> np.ndarray:
+    """`ranking` (N, J) with each instance's own label and alternative labels moved to the front in
+    their order (the map's label is its top-1 even when it weighed more than the embedding, such as
+    `MappingConfig.size_prior_temperature`); the embedding's order for the rest."""
+    index = {c.lower(): k for k, c in enumerate(categories)}
+    out = ranking.copy()
+    for k, inst in enumerate(scene.instances):
+        stated = list(dict.fromkeys(index[name.lower()] for name in (inst.label, *inst.alt_labels)
+                                    if name.lower() in index))
+        if stated:
+            out[k] = np.r_[stated, ranking[k][~np.isin(ranking[k], stated)]]
+    return out
 
 
 def prediction_from_pointwise(keys: np.ndarray, scores: np.ndarray, cell_size: float,

@@ -66,7 +66,7 @@ class MapBuilder:
         meta = {"frames": str(self.n_frames), "second_pass": str(second_pass).lower(),
                 "instances_first_pass": str(before), "second_pass_merges": str(merges),
                 "continuity_merges": str(continuous)}
-        return to_scene_map(d, categories, category_embeddings, cell_size=self.cfg.cell_size, scene_id=scene_id,
+        return to_scene_map(d, categories, category_embeddings, cfg=self.cfg, scene_id=scene_id,
                             embedding_space=embedding_space, meta=meta)
 
 

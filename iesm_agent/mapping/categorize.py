@@ -15,9 +15,8 @@ def category_ranking(z: np.ndarray) -> np.ndarray:
     return np.argsort(-z, axis=1, kind="stable")
 
 
-def categorize(f: np.ndarray, e: np.ndarray, categories: list[str], n_alt: int = 4) -> list[tuple[str, list[str]]]:
-    """(label, next `n_alt` labels) per instance from Z = F E^T over the category list."""
-    if len(categories) != len(e):
-        raise ValueError(f"{len(categories)} categories but {len(e)} category embeddings")
-    ranking = category_ranking(category_scores(f, e))
-    return [(categories[row[0]], [categories[j] for j in row[1:1 + n_alt]]) for row in ranking]
+def ranked_labels(z: np.ndarray, categories: list[str], n_alt: int = 4) -> list[tuple[str, list[str]]]:
+    """(label, next `n_alt` labels) per instance from its category scores Z (N, J)."""
+    if z.shape[1] != len(categories):
+        raise ValueError(f"{len(categories)} categories but {z.shape[1]} category embeddings")
+    return [(categories[row[0]], [categories[j] for j in row[1:1 + n_alt]]) for row in category_ranking(z)]

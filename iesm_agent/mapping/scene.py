@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..config import MappingConfig
 from ..store.model import GridSpec, Instance, InstanceGrid, SceneMap
 from .association import unit_rows
-from .categorize import categorize
+from .categorize import category_scores, ranked_labels
 from .cells import rowcol_of
 from .dictionary import InstanceDictionary
+from .plausibility import instance_top, plausible_scores, size_log_likelihood
 
 MARGIN_CELLS = 5  # free cells around the occupied bounds
 
@@ -41,11 +43,26 @@ def frames_by_area(observations: list[tuple[int, int, int, float]]) -> list[int]
     return sorted(best, key=lambda fr: (-best[fr], fr))
 
 
+def label_scores(d: InstanceDictionary, categories: list[str], category_embeddings: np.ndarray,
+                 cfg: MappingConfig) -> np.ndarray:
+    """(N, J) scores the labels are ranked by: Z = F E^T (Sec. 3.1), or with `cfg.size_prior_temperature`
+    the cosines weighed with the plausibility of each entry's footprint and top height
+    (`mapping.plausibility`)."""
+    if cfg.size_prior_temperature is None:
+        return category_scores(d.embeddings, category_embeddings)
+    z = category_scores(unit_rows(d.embeddings), unit_rows(category_embeddings))
+    area = d.sizes * cfg.cell_size ** 2
+    top = np.array([instance_top(t) for t in d.tops])
+    return plausible_scores(z, size_log_likelihood(area, top, categories, cfg.size_prior_floor),
+                            cfg.size_prior_temperature)
+
+
 def to_scene_map(d: InstanceDictionary, categories: list[str], category_embeddings: np.ndarray, *,
-                 cell_size: float, scene_id: str, embedding_space: str, meta: dict[str, str]) -> SceneMap:
+                 cfg: MappingConfig, scene_id: str, embedding_space: str, meta: dict[str, str]) -> SceneMap:
     """The built `SceneMap` of dictionary `d` (entry i becomes instance id i + 1)."""
+    cell_size = cfg.cell_size
     grid = grid_around(np.concatenate(d.keys) if len(d) else np.zeros(0, np.int64), cell_size)
-    labels = categorize(d.embeddings, category_embeddings, categories) if len(d) else []
+    labels = ranked_labels(label_scores(d, categories, category_embeddings, cfg), categories) if len(d) else []
     instances, cells, ids, tops, obs_rows = [], [], [], [], []
     for i in range(len(d)):
         iid = i + 1
