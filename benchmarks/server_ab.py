@@ -6,7 +6,9 @@ client's CPU per call in the bursts, the bursts' p50 over the floor's, and the o
 then the medians.
 On a shared machine only figures from the same rounds compare.
 
-A tree of an older commit: `git archive <commit> | tar -x -C DIR`.
+A tree of an older commit: `git archive <commit> | tar -x -C DIR`. `DIR=PYTHON` runs that tree's
+server with another interpreter (another venv: installed packages such as uvloop and httptools
+differ); the SDK floor and the client stay this one's.
 
 Run from the repository root (not part of `make bench`: it reports differences, no target):
 HF_HUB_OFFLINE=1 .venv/bin/python benchmarks/server_ab.py --rounds 4 DIR_BEFORE .
@@ -28,7 +30,7 @@ import bench_server  # noqa: E402
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("trees", nargs="+", type=Path)
+    parser.add_argument("trees", nargs="+", help="DIR or DIR=PYTHON")
     parser.add_argument("--rounds", type=int, default=4)
     args = parser.parse_args()
     env = {**os.environ, "HF_HUB_OFFLINE": "1"}
@@ -36,11 +38,12 @@ def main() -> None:
     pool = bench_server.queries()
     sequential, rest = pool[:40], pool[40:]
     bursts = [rest[i * 40:(i + 1) * 40] for i in range(3)]
-    figures: dict[Path, list[dict]] = {tree: [] for tree in args.trees}
+    figures: dict[str, list[dict]] = {tree: [] for tree in args.trees}
     with bench_server.noop_server() as floor:
         for r in range(args.rounds):
             for tree in args.trees:
-                bench_server.REPO = tree.resolve()
+                path, _, python = tree.partition("=")
+                bench_server.REPO, bench_server.PYTHON = Path(path).resolve(), python or sys.executable
                 with contextlib.redirect_stdout(io.StringIO()):
                     out = bench_server.run_config(env, sequential, bursts, floor, cold=False)
                 figures[tree].append(out)
