@@ -6,6 +6,11 @@ client's CPU per call in the bursts, the bursts' p50 over the floor's, and the o
 then the medians.
 On a shared machine only figures from the same rounds compare.
 
+`--new-embeddings`: each server starts with a cache folder of its own holding the encoder's model
+files but no stored sentence vectors, so every query's embedding is computed in the run, as for a
+user's new queries (without it the bench queries' vectors come back from the on-disk store that
+earlier runs filled).
+
 A tree of an older commit: `git archive <commit> | tar -x -C DIR`. `DIR=PYTHON` runs that tree's
 server with another interpreter (another venv: installed packages such as uvloop and httptools
 differ); the SDK floor and the client stay this one's.
@@ -22,16 +27,34 @@ import io
 import os
 import statistics
 import sys
+import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
 import bench_server  # noqa: E402
 
 
+@contextlib.contextmanager
+def without_stored_vectors(env: dict[str, str]):
+    """`env` with IESM_CACHE_DIR a new folder whose encoders/ links the encoder's model files of
+    the cache in use (the ONNX export and its checksum) and holds no vector store."""
+    from iesm_agent.cachedir import default_cache_dir
+
+    with tempfile.TemporaryDirectory() as tmp:
+        encoders = Path(tmp) / "encoders"
+        encoders.mkdir()
+        for f in (default_cache_dir() / "encoders").glob("*.onnx*"):
+            if f.suffix in (".onnx", ".json"):
+                (encoders / f.name).symlink_to(f)
+        yield {**env, "IESM_CACHE_DIR": tmp}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("trees", nargs="+", help="DIR or DIR=PYTHON")
     parser.add_argument("--rounds", type=int, default=4)
+    parser.add_argument("--new-embeddings", action="store_true",
+                        help="no stored sentence vectors: every query is embedded in the run")
     args = parser.parse_args()
     env = {**os.environ, "HF_HUB_OFFLINE": "1"}
     env.pop("IESM_EMBEDDINGS", None)
@@ -44,8 +67,9 @@ def main() -> None:
             for tree in args.trees:
                 path, _, python = tree.partition("=")
                 bench_server.REPO, bench_server.PYTHON = Path(path).resolve(), python or sys.executable
-                with contextlib.redirect_stdout(io.StringIO()):
-                    out = bench_server.run_config(env, sequential, bursts, floor, cold=False)
+                fresh = without_stored_vectors(env) if args.new_embeddings else contextlib.nullcontext(env)
+                with fresh as run_env, contextlib.redirect_stdout(io.StringIO()):
+                    out = bench_server.run_config(run_env, sequential, bursts, floor, cold=False)
                 figures[tree].append(out)
                 print(f"round {r} {tree}: server CPU per call {out['burst_server_cpu_ms']:.2f} ms (client "
                       f"{out['burst_client_cpu_ms']:.2f}), burst p50 "
