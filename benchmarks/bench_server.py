@@ -230,10 +230,11 @@ def run_config(env: dict[str, str], sequential: list[str], bursts: list[list[str
     return out
 
 
-def serve_noop(port_file: str) -> None:
+def serve_noop(port_file: str, loop: str = "served", http: str = "auto") -> None:
     """The SDK's floor: an MCP server with one tool that returns "ok", the same transport settings
     as `iesm serve` (streamable HTTP, JSON responses, loggers at WARNING, its event loop: uvloop's
-    when installed); writes its port to `port_file`."""
+    when installed, `loop` "asyncio" for asyncio's; `http` uvicorn's parser: auto (httptools when
+    installed), h11 or httptools); writes its port to `port_file`."""
     import logging
     import socket
 
@@ -251,12 +252,13 @@ def serve_noop(port_file: str) -> None:
         return "ok"
 
     config = uvicorn.Config(server.streamable_http_app(streamable_http_path="/mcp", json_response=True,
-                                                      host="127.0.0.1"), log_level="warning", access_log=False)
+                                                      host="127.0.0.1"), log_level="warning", access_log=False,
+                            http=http)
     sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM, socket.IPPROTO_TCP)  # TCP_NODELAY, as `iesm serve`
     sock.bind(("127.0.0.1", 0))
     sock.listen(128)
     Path(port_file).write_text(str(sock.getsockname()[1]))
-    with asyncio.Runner(loop_factory=event_loop_factory()) as runner:
+    with asyncio.Runner(loop_factory=event_loop_factory() if loop == "served" else None) as runner:
         runner.run(uvicorn.Server(config).serve(sockets=[sock]))
 
 
@@ -284,11 +286,13 @@ def serve_canned() -> None:
 
 
 @contextlib.contextmanager
-def noop_server():
-    """The SDK's floor server (this script with --noop-server) in its own process: (url, pid)."""
+def noop_server(loop: str = "served", http: str = "auto"):
+    """The SDK's floor server (this script with --noop-server; `serve_noop`'s `loop` and `http`) in
+    its own process: (url, pid)."""
     with tempfile.TemporaryDirectory() as tmp:
         port_file = Path(tmp) / "port"
-        proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file)],
+        proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file), "--noop-loop", loop,
+                                 "--noop-http", http],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         try:
             for _ in range(200):
@@ -308,10 +312,12 @@ def main() -> None:
     parser.add_argument("--concurrent", type=int, default=40)
     parser.add_argument("--rounds", type=int, default=3, help="bursts per configuration")
     parser.add_argument("--noop-server", metavar="PORT_FILE", help=argparse.SUPPRESS)
+    parser.add_argument("--noop-loop", choices=("served", "asyncio"), default="served", help=argparse.SUPPRESS)
+    parser.add_argument("--noop-http", choices=("auto", "h11", "httptools"), default="auto", help=argparse.SUPPRESS)
     parser.add_argument("--canned-server", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.noop_server:
-        serve_noop(args.noop_server)
+        serve_noop(args.noop_server, args.noop_loop, args.noop_http)
         return
     if args.canned_server:
         serve_canned()

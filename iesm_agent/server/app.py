@@ -259,8 +259,9 @@ def freeze_start_up_heap() -> None:
 
 def event_loop_factory() -> Callable[[], asyncio.AbstractEventLoop] | None:
     """uvloop's event loop when it is installed (the `mcp` extra installs it where it builds: not on
-    Windows), else None for asyncio's own. Per call over HTTP it spends about 0.2-0.4 ms less of the
-    server's CPU than asyncio's loop (docs/performance.md, "Fifth round")."""
+    Windows), else None for asyncio's own. With uvicorn's httptools parser it took a no-op MCP tool's
+    server CPU per call over HTTP from 1.41 ms (asyncio, h11) to 0.90 ms (`benchmarks/sdk_loop_ab.py`,
+    docs/performance.md, "Fifth round")."""
     try:
         import uvloop
     except ImportError:
