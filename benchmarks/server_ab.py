@@ -1,9 +1,9 @@
 """Interleaved A/B of `bench_server.py`'s measurement on two or more source trees: each round starts
 each tree's `iesm serve` in turn (the tree as working directory, so its `iesm_agent` is the one
 imported) and measures 40 first-time calls one by one and three bursts of 40 first-time queries
-against the SDK floor, embeddings as installed. Per round and tree it prints the server's and the
-client's CPU per call in the bursts, the bursts' p50 over the floor's, and the one-by-one p50;
-then the medians.
+against the SDK floor, embeddings as installed (`--lexicons-only`: switched off). Per round and
+tree it prints the server's and the client's CPU per call in the bursts, the bursts' p50 over the
+floor's, and the one-by-one p50; then the medians.
 On a shared machine only figures from the same rounds compare.
 
 `--new-embeddings`: each server starts with a cache folder of its own holding the encoder's model
@@ -55,9 +55,13 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=4)
     parser.add_argument("--new-embeddings", action="store_true",
                         help="no stored sentence vectors: every query is embedded in the run")
+    parser.add_argument("--lexicons-only", action="store_true", help="the offline model without embeddings "
+                        "(IESM_EMBEDDINGS=0)")
     args = parser.parse_args()
     env = {**os.environ, "HF_HUB_OFFLINE": "1"}
     env.pop("IESM_EMBEDDINGS", None)
+    if args.lexicons_only:
+        env["IESM_EMBEDDINGS"] = "0"
     pool = bench_server.queries()
     sequential, rest = pool[:40], pool[40:]
     bursts = [rest[i * 40:(i + 1) * 40] for i in range(3)]
