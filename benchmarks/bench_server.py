@@ -47,6 +47,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 from results_io import record  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
+#: the interpreter the servers and `iesm ask` run with (`server_ab.py` sets it per tree)
+PYTHON = sys.executable
 SUITES = ("evals/apartment_suite.jsonl", "evals/apartment_human_suite.jsonl", "evals/conflict_suite.jsonl",
           "evals/spatial_suite.jsonl")
 ASK_QUERY = "the red leather chair in the office"
@@ -72,7 +74,7 @@ def start_server(env: dict[str, str], command: tuple[str, ...] = SERVE) -> tuple
     """The server process (`python command`), its /mcp URL and its start-up time in s (maps +
     model loaded, warm-up query done)."""
     started = time.perf_counter()
-    proc = subprocess.Popen([sys.executable, *command], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True,
+    proc = subprocess.Popen([PYTHON, *command], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True,
                             env=env, cwd=REPO)
     seen = []
     for line in proc.stderr:  # progress lines (encoder loading), then the URL
@@ -161,7 +163,7 @@ def ask_cold_s(env: dict[str, str], repeat: int = 3) -> float:
     times = []
     for _ in range(repeat):
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "iesm_agent.cli", "ask", "apartment", ASK_QUERY], env=env, cwd=REPO,
+        subprocess.run([PYTHON, "-m", "iesm_agent.cli", "ask", "apartment", ASK_QUERY], env=env, cwd=REPO,
                        check=True, capture_output=True)
         times.append(time.perf_counter() - t0)
     return statistics.median(times)
@@ -228,14 +230,18 @@ def run_config(env: dict[str, str], sequential: list[str], bursts: list[list[str
     return out
 
 
-def serve_noop(port_file: str) -> None:
+def serve_noop(port_file: str, loop: str = "served", http: str = "auto") -> None:
     """The SDK's floor: an MCP server with one tool that returns "ok", the same transport settings
-    as `iesm serve` (streamable HTTP, JSON responses, loggers at WARNING); writes its port to `port_file`."""
+    as `iesm serve` (streamable HTTP, JSON responses, loggers at WARNING, its event loop: uvloop's
+    when installed, `loop` "asyncio" for asyncio's; `http` uvicorn's parser: auto (httptools when
+    installed), h11 or httptools); writes its port to `port_file`."""
     import logging
     import socket
 
     import uvicorn
     from mcp.server.mcpserver import MCPServer
+
+    from iesm_agent.server.app import event_loop_factory
 
     logging.disable(logging.INFO)
     server = MCPServer("noop")
@@ -246,12 +252,14 @@ def serve_noop(port_file: str) -> None:
         return "ok"
 
     config = uvicorn.Config(server.streamable_http_app(streamable_http_path="/mcp", json_response=True,
-                                                      host="127.0.0.1"), log_level="warning", access_log=False)
+                                                      host="127.0.0.1"), log_level="warning", access_log=False,
+                            http=http)
     sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM, socket.IPPROTO_TCP)  # TCP_NODELAY, as `iesm serve`
     sock.bind(("127.0.0.1", 0))
     sock.listen(128)
     Path(port_file).write_text(str(sock.getsockname()[1]))
-    asyncio.run(uvicorn.Server(config).serve(sockets=[sock]))
+    with asyncio.Runner(loop_factory=event_loop_factory() if loop == "served" else None) as runner:
+        runner.run(uvicorn.Server(config).serve(sockets=[sock]))
 
 
 def serve_canned() -> None:
@@ -274,15 +282,17 @@ def serve_canned() -> None:
         service.warm_up = lambda: asyncio.sleep(0)
         await app.serve_http(service, "127.0.0.1", 0, None)
 
-    asyncio.run(main())
+    app.run(main())
 
 
 @contextlib.contextmanager
-def noop_server():
-    """The SDK's floor server (this script with --noop-server) in its own process: (url, pid)."""
+def noop_server(loop: str = "served", http: str = "auto"):
+    """The SDK's floor server (this script with --noop-server; `serve_noop`'s `loop` and `http`) in
+    its own process: (url, pid)."""
     with tempfile.TemporaryDirectory() as tmp:
         port_file = Path(tmp) / "port"
-        proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file)],
+        proc = subprocess.Popen([sys.executable, __file__, "--noop-server", str(port_file), "--noop-loop", loop,
+                                 "--noop-http", http],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         try:
             for _ in range(200):
@@ -302,10 +312,12 @@ def main() -> None:
     parser.add_argument("--concurrent", type=int, default=40)
     parser.add_argument("--rounds", type=int, default=3, help="bursts per configuration")
     parser.add_argument("--noop-server", metavar="PORT_FILE", help=argparse.SUPPRESS)
+    parser.add_argument("--noop-loop", choices=("served", "asyncio"), default="served", help=argparse.SUPPRESS)
+    parser.add_argument("--noop-http", choices=("auto", "h11", "httptools"), default="auto", help=argparse.SUPPRESS)
     parser.add_argument("--canned-server", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.noop_server:
-        serve_noop(args.noop_server)
+        serve_noop(args.noop_server, args.noop_loop, args.noop_http)
         return
     if args.canned_server:
         serve_canned()

@@ -1,8 +1,9 @@
 """Where the CPU of one `find_goal` goes, in-process (no HTTP): the parts of MTEFR with the offline
 model, measured with per-thread CPU time around each part, on the queries `bench_server.py` sends
 in its bursts (first time in the process, then repeated), and the server's own share
-(`MapService.find_goal` on its worker pool, all threads, minus the retrieval alone; and with the
-model's calls on the server's loop, which shows what the pool's hand-off costs).
+(`MapService.find_goal`, all threads, minus the retrieval alone: the model's calls run on the
+server's loop when the encoder holds every row they need, as it does for repeated queries; and with
+the model called directly, without `OffLoopModel`, which shows what its job costs).
 
 Also measured: the English parser one sentence at a time (as a query asked alone is read) against
 `nlp.pipe` over the same sentences in batches of 40, per pipeline component too, and the burst
@@ -94,9 +95,8 @@ async def retrieval_alone(store, asked: list[str]) -> tuple[float, float, collec
 
 
 async def served(asked: list[str], rounds: int = 3, inline: bool = False) -> float:
-    """CPU ms per repeated query of `MapService.find_goal` (worker pool, all threads), median of
-    rounds; `inline`: the model's calls on the server's loop instead of the pool (what the
-    hand-off to the pool costs)."""
+    """CPU ms per repeated query of `MapService.find_goal` (all threads), median of rounds;
+    `inline`: the model called directly instead of through `OffLoopModel` (what its job costs)."""
     service = MapService.open(["apartment"])
     await service.warm_up()
     if inline:
@@ -212,9 +212,9 @@ def main() -> None:
     print(f"  retrieval (Retriever.aask, model inline): first time {first:.2f}, repeated {again:.2f}")
     for label, ms in parts.most_common():
         print(f"    {label:<36} {ms:6.2f}")
-    print(f"  MapService.find_goal on its worker pool, repeated queries, all threads: {repeated:.2f} "
-          f"(server's own share over the retrieval: {repeated - again:+.2f}); with the model's calls on the "
-          f"server's loop instead of the pool: {repeated_inline:.2f}")
+    print(f"  MapService.find_goal, repeated queries (the model's calls on the server's loop: every row "
+          f"held), all threads: {repeated:.2f} (server's own share over the retrieval: {repeated - again:+.2f}); "
+          f"with the model called directly, no OffLoopModel: {repeated_inline:.2f}")
     print(f"  burst path: parse_queries in batches of 40 {parsed:.2f}, then retrieval {retrieved:.2f}")
     print(f"  English parser: one sentence at a time {one:.2f} ms, nlp.pipe in batches of 40 {batched:.2f} ms "
           f"({len(pool)} suite queries); per component, alone / batched:")

@@ -7,16 +7,21 @@ The backend (`encoding/`) is onnxruntime over an ONNX export of the bundled weig
 in the user cache at first use (torch is imported only then), or sentence-transformers when
 onnxruntime / tokenizers are missing or `IESM_ENCODER_BACKEND=torch`. Both give the same
 vectors (cosine > 0.9999). Rows are memoised in memory (LRU) and on disk (`VectorStore`).
+Within `held_only()` the encoder answers from those rows alone: a text it would have to embed
+raises `EncodingNeeded` instead (the server then computes that query off its event loop).
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import os
 import sys
 import threading
 import time
 import warnings
 from collections import OrderedDict
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -27,6 +32,25 @@ from .encoding.model_files import installed as _weights_installed
 _LOCK = threading.Lock()
 _STATE: dict[str, object] = {}
 BACKENDS = ("onnx", "torch")
+#: True within `held_only()` (per context: a thread, or a task and the tasks it starts)
+_HELD_ONLY: contextvars.ContextVar[bool] = contextvars.ContextVar("iesm_held_only", default=False)
+
+
+class EncodingNeeded(RuntimeError):
+    """`Encoder.encode` within `held_only()` was asked for a text it holds no row for."""
+
+
+@contextlib.contextmanager
+def held_only() -> Iterator[None]:
+    """Within it (in this context), `Encoder.encode` answers only from the rows it holds, in memory
+    or in its vector store, and raises `EncodingNeeded` rather than run its backend (about 4 ms of
+    CPU a sentence): a caller on an event loop computes where it is when every row is held and
+    moves the work elsewhere otherwise."""
+    token = _HELD_ONLY.set(True)
+    try:
+        yield
+    finally:
+        _HELD_ONLY.reset(token)
 
 
 class Encoder:
@@ -60,6 +84,8 @@ class Encoder:
         if missing:
             found = self._store.get(list(missing)) if self._store is not None else {}
             todo = [t for t in missing if t not in found]
+            if todo and _HELD_ONLY.get():
+                raise EncodingNeeded(f"{len(todo)} text(s) not embedded yet, e.g. {todo[0][:60]!r}")
             if todo:
                 rows = self.backend.encode_batch(todo)
                 found.update(zip(todo, rows))

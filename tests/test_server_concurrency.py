@@ -1,5 +1,6 @@
-"""`iesm serve` under concurrent calls: local model calls run on the bounded worker pool, off the
-event loop, and concurrent answers are the serial ones (lexicons alone and with the encoder);
+"""`iesm serve` under concurrent calls: local model calls run on the server's loop, and on the
+bounded worker pool when they need a new sentence embedding; concurrent answers are the serial
+ones (lexicons alone and with the encoder);
 `find_goal` carries the goal's box and a ranking without zero-score padding."""
 
 from __future__ import annotations
@@ -36,7 +37,8 @@ async def _serial_then_concurrent(service: MapService, queries: list[str]) -> tu
     return serial, concurrent
 
 
-def test_local_model_calls_run_on_the_bounded_pool(apartment_store, monkeypatch):
+def test_calls_needing_no_new_embedding_run_on_the_loop(apartment_store, monkeypatch):
+    """Without an encoder no call needs one: every model call runs on the server's loop."""
     monkeypatch.setenv("IESM_EMBEDDINGS", "0")
     threads: list[str] = []
     answer = OfflineModel.answer
@@ -51,26 +53,37 @@ def test_local_model_calls_run_on_the_bounded_pool(apartment_store, monkeypatch)
 
     async def run():
         try:
-            return await _serial_then_concurrent(service, queries)
+            return await _serial_then_concurrent(service, queries), threading.current_thread().name
         finally:
             await service.aclose()
 
-    serial, concurrent = asyncio.run(run())
+    (serial, concurrent), loop_thread = asyncio.run(run())
     assert isinstance(service.retriever(None, "mtefr", None).model, OffLoopModel)
-    assert threads and all(name.startswith("iesm-worker") for name in threads)  # never the loop's thread
-    assert len(set(threads)) <= 2
+    assert threads and set(threads) == {loop_thread}
     assert [_without_timing(r) for r in concurrent] == [_without_timing(r) for r in serial]
     assert len({r["instance_id"] for r in serial}) >= 6
 
 
-def test_a_query_reaches_the_pool_as_one_job_and_queries_never_share_one(apartment_store, monkeypatch):
-    monkeypatch.setenv("IESM_EMBEDDINGS", "0")
+def test_new_embeddings_are_computed_on_the_pool_one_job_per_query(apartment_store, monkeypatch):
+    """A query whose text the encoder has not embedded sends the calls that need it to a worker
+    as one job (never another query's calls with them), and the encoder's backend runs there,
+    never on the loop; asked again, the query is answered on the loop, the same answer."""
+    from test_encoder_held_only import HashBackend
+
+    from iesm_agent.embeddings import Encoder
+    from iesm_agent.providers.offline import model as offline_model
+
+    backend = HashBackend()
+    encoder = Encoder(backend)
+    monkeypatch.delenv("IESM_EMBEDDINGS", raising=False)
+    monkeypatch.setattr(offline_model, "get_encoder", lambda: encoder)
     service = MapService({"apartment": apartment_store}, workers=2)
-    jobs: list[tuple[str, int]] = []  # (worker thread, calls in the job)
+    jobs: list[tuple[str, int]] = []  # (thread, calls in the job) of every job run on a worker
     complete_all = OffLoopModel._complete_all
 
     async def recording(self, requests):
-        jobs.append((threading.current_thread().name, len(requests)))
+        if threading.current_thread().name.startswith("iesm-worker"):
+            jobs.append((threading.current_thread().name, len(requests)))
         return await complete_all(self, requests)
 
     monkeypatch.setattr(OffLoopModel, "_complete_all", recording)
@@ -78,33 +91,43 @@ def test_a_query_reaches_the_pool_as_one_job_and_queries_never_share_one(apartme
 
     async def run():
         try:
-            serial = [await service.find_goal(q) for q in queries]
-            n_serial = len(jobs)
-            concurrent = await asyncio.gather(*(service.find_goal(q) for q in queries))
-            return serial, n_serial, concurrent
+            concurrent = await asyncio.gather(*(service.find_goal(q) for q in queries))  # every text new
+            n_jobs = len(jobs)
+            for retriever in service._retrievers.values():
+                retriever._views.clear()
+            serial = [await service.find_goal(q) for q in queries]  # every text held now
+            return concurrent, n_jobs, serial
         finally:
             await service.aclose()
 
-    serial, n_serial, concurrent = asyncio.run(run())
-    assert n_serial == len(queries) and len(jobs) == 2 * len(queries)  # one job per query, serial or not
-    sizes = {size for _, size in jobs}
-    assert len(sizes) == 1 and sizes.pop() > 1  # the gate and the experts of one query, never two queries'
-    assert all(name.startswith("iesm-worker") for name, _ in jobs)
+    concurrent, n_jobs, serial = asyncio.run(run())
+    assert n_jobs == len(queries) and len(jobs) == n_jobs  # one job per new query, none for held ones
+    assert all(1 < size < 6 for _, size in jobs)  # the experts weighing embeddings, never two queries' calls
+    assert backend.batches and all(thread.startswith("iesm-worker") for thread, _ in backend.batches)
     assert [_without_timing(r) for r in concurrent] == [_without_timing(r) for r in serial]
 
 
 def test_a_failing_call_fails_alone_within_its_job():
-    """Each caller of a job gets its own completion, exception or timeout; a failed job fails every call."""
+    """Each caller of a job gets its own completion, exception or timeout, on the loop and on
+    the pool; a failed job fails every call."""
+    from test_encoder_held_only import HashBackend
+
+    from iesm_agent.embeddings import Encoder
     from iesm_agent.providers.base import Completion, Message, Model
     from iesm_agent.server.workers import WorkerPool
 
+    encoder = Encoder(HashBackend())
+
     class Picky(Model):
         async def acomplete(self, messages, options=None):
-            if "bad" in messages[0].text():
+            text = messages[0].text()
+            if "new" in text:
+                encoder.encode([text])  # refused on the loop: computed on the pool
+            if "bad" in text:
                 raise ValueError("refused")
-            if "slow" in messages[0].text():
+            if "slow" in text:
                 await asyncio.sleep(0.3)
-            return Completion(text=messages[0].text().upper(), model="picky")
+            return Completion(text=f"{text.upper()} {threading.current_thread().name}", model="picky")
 
     pool = WorkerPool(2)
     model = OffLoopModel(Picky(), pool)
@@ -113,19 +136,23 @@ def test_a_failing_call_fails_alone_within_its_job():
         return asyncio.wait_for(model.acomplete([Message(role="user", content=text)]), timeout)
 
     async def run():
-        return await asyncio.gather(ask("good one"), ask("bad one"), ask("slow one", timeout=0.05), ask("good two"),
-                                    return_exceptions=True)
+        return await asyncio.gather(ask("good one"), ask("bad one"), ask("slow one", timeout=0.05), ask("good new"),
+                                    ask("bad new"), return_exceptions=True)
 
-    good, bad, late, good_two = asyncio.run(run())
-    assert good.text == "GOOD ONE" and good_two.text == "GOOD TWO"
+    good, bad, late, good_new, bad_new = asyncio.run(run())
+    assert good.text == "GOOD ONE MainThread" and good_new.text.startswith("GOOD NEW iesm-worker")
     assert isinstance(bad, ValueError) and str(bad) == "refused"
+    assert isinstance(bad_new, ValueError) and str(bad_new) == "refused"
     assert isinstance(late, TimeoutError)  # its deadline passed; the job's later answer is dropped
     pool.shutdown()
 
     async def after_shutdown():
-        return await asyncio.gather(model.acomplete([Message(role="user", content="x")]), return_exceptions=True)
+        return await asyncio.gather(model.acomplete([Message(role="user", content="x")]),
+                                    model.acomplete([Message(role="user", content="another new")]),
+                                    return_exceptions=True)
 
-    (closed,) = asyncio.run(after_shutdown())
+    on_loop, closed = asyncio.run(after_shutdown())
+    assert on_loop.text == "X MainThread"
     assert isinstance(closed, RuntimeError)  # the pool refuses new work: the call fails, it does not hang
 
 

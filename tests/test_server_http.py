@@ -123,3 +123,30 @@ def test_the_start_up_heap_is_frozen_after_warm_up_before_serving(apartment_stor
     finally:
         gc.unfreeze()  # the test process's heap back to normal
     assert events == ["warm-up", "serve (frozen objects: True)"]
+
+
+def test_the_server_runs_on_uvloop_when_installed(monkeypatch):
+    """`app.run` (what `iesm serve` runs) uses uvloop's event loop when it is importable and
+    asyncio's own when it is not."""
+    from iesm_agent.server import app
+
+    async def loop_module() -> str:
+        return type(asyncio.get_running_loop()).__module__
+
+    def run_and_see() -> str:
+        seen: list[str] = []
+
+        async def main() -> None:
+            seen.append(await loop_module())
+
+        app.run(main())
+        return seen[0]
+
+    try:
+        import uvloop  # noqa: F401
+    except ImportError:
+        pass
+    else:
+        assert run_and_see().startswith("uvloop")
+    monkeypatch.setitem(sys.modules, "uvloop", None)  # not installed
+    assert run_and_see().startswith("asyncio")

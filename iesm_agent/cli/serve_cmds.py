@@ -38,8 +38,6 @@ def serve_command(
         if exc.name and exc.name.split(".")[0] == "mcp":
             raise IesmError("the MCP SDK is missing: install iesm-agent[mcp]", None, "serve") from None
         raise
-    import asyncio
-
     from ..server import MapService
 
     listen = app.parse_listen(http) if http is not None else None
@@ -48,11 +46,11 @@ def serve_command(
         app.check_exposure(listen[0], token, insecure_no_token)
     service = MapService.open(maps, tuple(dict.fromkeys(providers)))
     if listen is None:
-        asyncio.run(app.serve_stdio(service))
+        app.run(app.serve_stdio(service))
         return
     host, port = listen
     try:
-        asyncio.run(app.serve_http(service, host, port, token, tuple(allowed_hosts)))
+        app.run(app.serve_http(service, host, port, token, tuple(allowed_hosts)))
     except KeyboardInterrupt:
         pass
 

@@ -138,7 +138,8 @@ class Session:
             left = self.deadline - time.monotonic()
             if left <= 0:
                 raise TimeoutError("the query's deadline has passed; not sent")
-            completion = await asyncio.wait_for(self.model.acomplete(messages, options), left)
+            async with asyncio.timeout(None if math.isinf(left) else left):  # (no task of its own, as wait_for's)
+                completion = await self.model.acomplete(messages, options)
         except Exception as exc:  # provider errors, timeouts, bugs in plugins: recorded, not raised
             if isinstance(exc, TimeoutError) and not str(exc):
                 exc = TimeoutError("no reply before the query's deadline")

@@ -15,6 +15,7 @@ required on every request (401 otherwise).
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import functools
 import gc
@@ -24,7 +25,7 @@ import logging
 import re
 import socket
 import sys
-from typing import Any, Callable
+from typing import Any, Callable, Coroutine
 
 from mcp.server.auth.provider import AccessToken
 from mcp.server.auth.settings import AuthSettings
@@ -254,6 +255,24 @@ def freeze_start_up_heap() -> None:
     calls. Frozen objects are still freed by reference counting."""
     gc.collect()
     gc.freeze()
+
+
+def event_loop_factory() -> Callable[[], asyncio.AbstractEventLoop] | None:
+    """uvloop's event loop when it is installed (the `mcp` extra installs it where it builds: not on
+    Windows), else None for asyncio's own. With uvicorn's httptools parser it took a no-op MCP tool's
+    server CPU per call over HTTP from 1.41 ms (asyncio, h11) to 0.90 ms (`benchmarks/sdk_loop_ab.py`,
+    docs/performance.md, "Fifth round")."""
+    try:
+        import uvloop
+    except ImportError:
+        return None
+    return uvloop.new_event_loop
+
+
+def run(main: Coroutine[Any, Any, None]) -> None:
+    """Run `main` (`serve_stdio(...)` or `serve_http(...)`) to completion on `event_loop_factory()`'s loop."""
+    with asyncio.Runner(loop_factory=event_loop_factory()) as runner:
+        runner.run(main)
 
 
 async def serve_stdio(service: MapService) -> None:

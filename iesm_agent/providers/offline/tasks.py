@@ -297,6 +297,9 @@ class _Block:
     label_words_of: np.ndarray            # (N,) int64 index into `label_words`
     room_keys: tuple[tuple[str | None, frozenset[str]], ...]  # (R,) distinct (room, room name lemmas)
     room_key_of: np.ndarray               # (N,) int64 index into `room_keys`
+    slots: tuple[Slot, ...]               # (S,) the distinct attribute slots of the candidates
+    slot_row: np.ndarray                  # (T,) int64 candidate row of each (candidate, slot) pair
+    slot_of: np.ndarray                   # (T,) int64 index into `slots`
 
 
 @lru_cache(maxsize=64)
@@ -317,6 +320,8 @@ def _parse_candidates(lines: tuple[str, ...]) -> _Block:
              for row, r in enumerate(records) for c, w in r.concepts]
     label_words: dict[frozenset[str], int] = {}
     room_keys: dict[tuple[str | None, frozenset[str]], int] = {}
+    slots: dict[Slot, int] = {}
+    slot_pairs = [(row, slots.setdefault(slot, len(slots))) for row, r in enumerate(records) for slot in r.slots]
     block = _Block(
         ids=np.array([i for i, _ in parsed], dtype=np.int64), records=records,
         rooms=[r.room for r in records if r.room], labels=[r.label for r in records if r.label],
@@ -329,9 +334,11 @@ def _parse_candidates(lines: tuple[str, ...]) -> _Block:
         label_words=tuple(label_words),
         room_key_of=np.array([room_keys.setdefault((r.room, r.room_words), len(room_keys)) for r in records],
                              dtype=np.int64),
-        room_keys=tuple(room_keys))
+        room_keys=tuple(room_keys), slots=tuple(slots),
+        slot_row=np.array([p[0] for p in slot_pairs], dtype=np.int64),
+        slot_of=np.array([p[1] for p in slot_pairs], dtype=np.int64))
     for array in (block.ids, block.pair_row, block.pair_concept, block.pair_weight, block.label_words_of,
-                  block.room_key_of):
+                  block.room_key_of, block.slot_row, block.slot_of):
         array.flags.writeable = False  # shared by every prompt showing the block
     return block
 
@@ -381,8 +388,10 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
     comp[:, _ROOM] = np.array([_room_fit(lex, q, room, words, memo) for room, words in block.room_keys],
                               dtype=np.float64).reshape(-1)[block.room_key_of]
     if q.slots:
-        comp[:, _DESC] = [sum(_slot_match(lex, q, i, r, memo) for i in range(len(q.slots))) / len(q.slots)
-                          for r in block.records]
+        desc = np.zeros(n, dtype=np.float64)
+        for slot in q.slots:  # (in order: the sum as Python's sum of the same values)
+            desc = desc + _slot_match(block, slot)
+        comp[:, _DESC] = desc / len(q.slots)
     if q.overlap:
         comp[:, _TEXT] = _text_overlap(q, block.records)
     comp.flags.writeable = False  # shared by the query's gate and experts
@@ -422,33 +431,31 @@ def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], m
     return fit
 
 
-def _slot_match(lex, q: QueryInfo, index: int, r: Record, memo: dict) -> float:
-    """Best match of the query's `index`-th attribute against a candidate: the same words 1.0,
-    the same words up to shade 0.9, its words in the candidate's text 0.85, the same family
-    0.7-0.8, a related family 0.4; -0.5 when the candidate says the opposite and nothing matches
-    ("the biggest table" against a small table)."""
-    best = 0.0
-    for other in r.slots:
-        key = ("s", index, other)
-        sim = memo.get(key)
-        if sim is None:
-            sim = memo[key] = _slot_sim(lex, q.slots[index], other)
-        if sim > best:
-            best = sim
-            if best >= 1.0:
-                return 1.0
-    if best < 0.85:
-        key = ("w", index)
-        words = memo.get(key)
-        if words is None:
-            words = memo[key] = frozenset(stem(w) for w in q.slots[index].base.split() if w != "like")
-        if words and words <= r.stems:
-            best = 0.85
-    if best == 0.0:
-        slot = q.slots[index]
-        if any(other.kind == slot.kind and any(lex.contradicts(slot.kind, a, b) for a in slot.values
-                                               for b in other.values) for other in r.slots):
-            return -0.5
+@lru_cache(maxsize=4096)
+def _slot_match(block: _Block, slot: Slot) -> np.ndarray:
+    """(N,) read-only: the best match of an attribute the query asks for (`slot`) against each
+    candidate of `block`: the same words 1.0, the same words up to shade 0.9, its words in the
+    candidate's text 0.85, the same family 0.7-0.8, a related family 0.4; -0.5 when the candidate
+    says the opposite and nothing matches ("the biggest table" against a small table). Memoised by
+    the block and the slot (queries asking for "red" on one map share it); each distinct slot of
+    the block is compared once."""
+    lex = load_lexicon()
+    n = len(block.records)
+    best = np.zeros(n, dtype=np.float64)
+    if len(block.slot_row):
+        sims = np.array([_slot_sim(lex, slot, other) for other in block.slots], dtype=np.float64)
+        np.maximum.at(best, block.slot_row, sims[block.slot_of])
+    words = frozenset(stem(w) for w in slot.base.split() if w != "like")
+    if words:
+        said = np.array([words <= r.stems for r in block.records], dtype=bool)
+        best[(best < 0.85) & said] = 0.85
+    if len(block.slot_row) and not best.all():
+        opposite = np.array([other.kind == slot.kind and any(lex.contradicts(slot.kind, a, b) for a in slot.values
+                                                             for b in other.values) for other in block.slots])
+        against = np.zeros(n, dtype=bool)
+        np.logical_or.at(against, block.slot_row, opposite[block.slot_of])
+        best[(best == 0.0) & against] = -0.5
+    best.flags.writeable = False
     return best
 
 
