@@ -296,8 +296,8 @@ def analyse_query(text: str) -> QueryInfo:
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
-    kind_of_one = reading.ruled_out[0] if reading.structure.excluded is not None or "one" in reading.lemmas \
-        and reading.ruled_out else None
+    fronted_or_one = reading.structure.excluded is not None or "one" in reading.lemmas
+    kind_of_one = reading.ruled_out[0] if fronted_or_one and reading.ruled_out else None
     if not _named(info) and kind_of_one is not None and kind_of_one.named and not info.afford:
         # "Not the tall oak wardrobe, the short pine one", "the pine one, not the oak wardrobe":
         # one of the kind the exclusion named

@@ -89,7 +89,7 @@ def _read_line(line: str) -> _Line | None:
                  room=room_of(str(data["room"])) if data.get("room") else None,
                  room_name=str(data["room"]) if data.get("room") else None,
                  on=ids(data.get("on")), under=ids(data.get("under")),
-                 label_words=_words(str(data.get("label") or "")),
+                 label_words=record[1].label_words if record else frozenset(),
                  words=record[1].words | record[1].room_words if record else frozenset(),
                  parts=frozenset(v for sp in lex.scan([lex.lemma(t) for t in lex.tokens(str(data.get("caption") or ""))])
                                  for k, v in sp.kinds if k == "cat"))
