@@ -508,3 +508,11 @@ def test_a_word_of_nearness_takes_its_noun_directly(text, target, kind, landmark
 def test_a_colour_before_a_compound_describes_the_target():
     q = parse_query("the grey conference seat by the screen")
     assert q.attrs == (("color", "gray"),) and q.modifiers == frozenset({"conference"})
+
+
+@pytest.mark.parametrize("query", ["It's a chair near the door. It's the blue one.",
+                                   "the blue painted chair nearest the door"])
+def test_the_targets_appearance_counts_wherever_the_request_gives_it(room, query):
+    # the red chair 10 is nearest the door; the appearance said in another sentence or before a
+    # participle still narrows the targets to the blue chair 11
+    assert spatial(room, query)[0] == 11

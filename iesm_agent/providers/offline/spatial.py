@@ -363,13 +363,16 @@ def rank(prompt: Prompt) -> dict:
     scene = _read_scene(prompt)
     if not len(scene.boxes):
         return abstain("no candidates")
+    reading = analyse_query(prompt.query)
     if sq.target:
-        kind = _of_kind(scene, sq.target, sq.attrs)
+        # the target's appearance wherever the request gives it (before a participle: "the olive
+        # lacquered stool"; in a later sentence: "... the teal one, I think"), not only in the relation's clause
+        attrs = tuple(dict.fromkeys(sq.attrs + tuple(reading.attrs)))
+        kind = _of_kind(scene, sq.target, attrs)
     else:  # "the one on the left": anything that is not a landmark
         marks = [c for r in sq.relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]
         kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
     targets = np.flatnonzero(kind & scene.is_candidate)
-    reading = analyse_query(prompt.query)
     named_rooms = {r for r, w in reading.rooms.items() if w >= 1.0}
     in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
     if in_room.any():  # "... in the attic": that room's instances
