@@ -111,3 +111,14 @@ def test_one_tokeniser_the_store_splits_what_the_lexicon_reads():
     assert words(text) == ["the", "off", "white", "l", "shaped", "sofa", "s", "cushion", "kid", "s", "room", "2nd",
                            "floor"]
     assert [w for t in load_lexicon().tokens(text) for w in words(t)] == words(text)
+
+
+def test_every_cue_word_is_a_form_the_lemmatiser_gives():
+    # a noun the language table keeps plural ("jeans" stays "jeans") never reads as its singular,
+    # so a cue written with the singular could never match
+    from iesm_agent.lexicon import load_lexicon
+
+    lex = load_lexicon()
+    cue_words = {w for key, kinds in lex.phrases.items() if any(k == "cue" for k, _ in kinds) for w in key}
+    unreachable = {w for w in cue_words if len(w) > 3 and lex.lemmas.get(w + "s") == w + "s"}
+    assert unreachable == set()
