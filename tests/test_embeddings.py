@@ -122,3 +122,20 @@ def test_encoder_loading_is_reported_apart_from_query_latency(apartment_store, m
     wall_ms = (time.perf_counter() - started) * 1000
     assert first.load_ms >= 1000 and first.latency_ms <= wall_ms - first.load_ms + 1
     assert retriever.ask("the yellow photo book").load_ms == 0  # loaded (or failed) once per process
+
+
+@pytest.mark.slow
+def test_the_abstract_expert_reads_a_use_by_its_meaning(encoder):
+    # the lexicon's cue words read "rinse" as a sink's use; none is on this map, and by meaning
+    # the request is a shower's: the abstract expert ranks it first only with the encoder
+    from test_offline_model import EXPERTS
+
+    cands = [{"id": 1, "label": "washing machine", "room": "bathroom"}, {"id": 2, "label": "towel rail", "room": "bathroom"},
+             {"id": 3, "label": "shower", "room": "bathroom"}]
+    query = "where can I rinse the sand off after the beach"
+    lib = PromptLibrary()
+    msgs = lib.render("expert.j2", query=query, focus=EXPERTS["abs"]["focus"], hint="", candidates=cands, kappa=2)
+    with_meaning = json.loads(OfflineModel(use_embeddings=True).complete(msgs).text)["ranked_instance_ids"]
+    lexicon_only = json.loads(OfflineModel(use_embeddings=False).complete(msgs).text)["ranked_instance_ids"]
+    assert with_meaning[0] == 3
+    assert lexicon_only[:1] != [3]

@@ -109,9 +109,9 @@ def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
 
 
 # -- ranking ---------------------------------------------------------------------------------
-#: index of each component in a candidate's row
-_LABEL, _ROOM, _DESC, _AFFORD, _TEXT, _EMB, _KIN = range(7)
-_N_COMPONENTS = 7
+#: index of each component in a candidate's row (_USE: filled for the abstract expert only)
+_LABEL, _ROOM, _DESC, _AFFORD, _TEXT, _EMB, _KIN, _USE = range(8)
+_N_COMPONENTS = 8
 #: a candidate is "of the asked-for kind" when its category (or function) fit reaches this share
 #: of the best fit among the candidates (1.0 exact, 0.9 more specific kind: all in; 0.6 parent: out)
 _TIER_SHARE = 0.75
@@ -147,6 +147,8 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     enc = encoder() if encoder is not None else None
     if enc is not None:
         comp = _with_embeddings(q, comp, enc, block)
+    if role == "abs" and enc is not None and not q.named:
+        comp = _with_uses(q, comp, enc, block)
     scores, relevant = _ROLE_SCORES[role](q, comp, lexical)
     scores = scores + _TIE_BREAK * comp.sum(axis=1)
     ruled_out = _ruled_out(q, records)
@@ -213,7 +215,7 @@ def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarra
 
 def _score_all(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
     """No focus (single pass): the asked-for kind first, then all evidence together."""
-    weights = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0])
+    weights = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
     if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
         weights[_TEXT], weights[_EMB] = 0.5, 1.0
     tier = _kind_tier(q, comp)
@@ -228,7 +230,7 @@ def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
     that kind; never the function asked for, which is the abstract expert's evidence); the other
     evidence (room, appearance, text, function) only orders candidates of the same tier."""
     tier = _label_tier(comp)
-    evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0])
+    evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0])
     return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
 
 
@@ -256,17 +258,18 @@ def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarr
     tier = _kind_tier(q, comp)
     desc = comp[:, _DESC] + 0.5 * comp[:, _TEXT] + 0.5 * comp[:, _EMB]
     score = _SECOND * desc + 3.0 * tier + comp[:, _LABEL]
-    return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3]) > 1e-9) | (tier >= 2)
+    return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0]) > 1e-9) | (tier >= 2)
 
 
 def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
-    """Function and intent first: the kinds that serve the purpose the query expresses (for a
-    named category, the purpose that kind serves: chair -> sofa, stool, bench too), then the
-    room and caption details to choose among them, then the label."""
-    if q.afford:
-        fn = comp[:, _AFFORD]
-    elif q.named:
-        fn = np.maximum(comp[:, _LABEL], comp[:, _KIN])
+    """Function and intent first: the kinds that serve the purpose the query expresses (by the
+    lexicon's cue words, and at _USE_WEIGHT by the uses nearest to the request in meaning, when the
+    encoder gave them; for a named category, the purpose that kind serves: chair -> sofa, stool,
+    bench too), then the room and caption details to choose among them, then the label."""
+    if q.named:
+        fn = comp[:, _AFFORD] if q.afford else np.maximum(comp[:, _LABEL], comp[:, _KIN])
+    elif q.afford or comp[:, _USE].any():
+        fn = comp[:, _AFFORD] + _USE_WEIGHT * comp[:, _USE]
     else:
         fn = comp[:, _TEXT] + comp[:, _EMB]
     tier = _tiers(fn, 0.0)
@@ -542,6 +545,61 @@ def _text_vectors(block: _Block, encoder) -> np.ndarray:
     rows = encoder.encode([r.text or "object" for r in block.records])
     rows.flags.writeable = False
     return rows
+
+
+#: a use the lexicon lists stands for the request when the encoder puts one of its phrases this
+#: close (cosine, all-MiniLM-L6-v2), and every use within _USE_MARGIN of the nearest counts with it
+_USE_MIN, _USE_MARGIN = 0.5, 0.05
+#: the uses read by meaning count half as much as the lexicon's cue words: they reorder close
+#: calls and fill a reading that found no use; they do not outweigh a core use the request names
+_USE_WEIGHT = 0.5
+
+
+def _with_uses(q: QueryInfo, comp: np.ndarray, encoder, block: _Block) -> np.ndarray:
+    """A copy of `comp` with its _USE column filled: per candidate, how well its category serves
+    the uses whose phrases the encoder finds nearest to the whole request (`_nearest_uses`), read
+    by the sentence's meaning rather than by the lexicon's cue words."""
+    uses = _nearest_uses(encoder, q.text)
+    if not uses or not len(block.pair_row):
+        return comp
+    lex = load_lexicon()
+    fits = np.array([_by_kind(lex, uses, cc) for cc in block.concepts], dtype=np.float64)
+    best = np.zeros(len(block.records), dtype=np.float64)
+    np.maximum.at(best, block.pair_row, block.pair_weight * fits[block.pair_concept])
+    out = comp.copy()
+    out[:, _USE] = best
+    out.flags.writeable = False
+    return out
+
+
+def _nearest_uses(encoder, text: str) -> dict[str, float]:
+    """Category -> weight of the lexicon's uses (affordance entries) nearest to `text` by the
+    encoder: each entry scores its nearest cue phrase's cosine; the entries at least _USE_MIN and
+    within _USE_MARGIN of the best give their categories (core 1.0-0.8, related 0.5) times their
+    score over the best. Empty when no entry is near enough."""
+    vectors, entry_of = _cue_vectors(encoder)
+    sims = vectors @ encoder.encode([text])[0]
+    best = np.full(len(load_lexicon().affordances), -1.0)
+    np.maximum.at(best, entry_of, sims)
+    top = float(best.max())
+    if top < _USE_MIN:
+        return {}
+    uses: dict[str, float] = {}
+    for index in np.flatnonzero(best >= top - _USE_MARGIN):
+        for concept, weight in load_lexicon().affordances[int(index)].items():
+            uses[concept] = max(uses.get(concept, 0.0), weight * float(best[index]) / top)
+    return uses
+
+
+@lru_cache(maxsize=4)
+def _cue_vectors(encoder) -> tuple[np.ndarray, np.ndarray]:
+    """(K, dim) the encoder's rows for the lexicon's K affordance cue phrases (as lemmas) and (K,)
+    the entry each belongs to; embedded once per encoder (and kept in its on-disk store)."""
+    cues = sorted((" ".join(key), int(value)) for key, kinds in load_lexicon().phrases.items()
+                  for kind, value in kinds if kind == "cue")
+    rows = np.asarray(encoder.encode([c for c, _ in cues]), np.float64)
+    rows.flags.writeable = False
+    return rows, np.array([i for _, i in cues], dtype=np.int64)
 
 
 # -- keyword ---------------------------------------------------------------------------------
