@@ -122,9 +122,15 @@ class Structure:
             k = self.words[k].head
         return k == ancestor
 
-    def children(self, k: int, dep: str) -> list[int]:
-        """Indices of the words the parse attaches to word `k` with relation `dep`."""
-        return [n for n, w in enumerate(self.words) if w.head == k and n != k and w.dep == dep]
+    def children(self, k: int | set[int | None] | None, *deps: str) -> list[int]:
+        """Indices of the words the parse attaches to word `k` (or to any of the words `k`) with
+        one of the relations `deps`."""
+        heads = k if isinstance(k, set) else {k}
+        return [n for n, w in enumerate(self.words) if w.head in heads and n not in heads and w.dep in deps]
+
+    def of_phrase(self, k: int | None) -> int | None:
+        """Index of the preposition "of" that word `k` takes ("the side [of] the piano"), or None."""
+        return next((n for n in self.children(k, "prep") if self.words[n].text.lower() == "of"), None)
 
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""

@@ -9,6 +9,8 @@ from dataclasses import dataclass
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
+#: (length a word must exceed, suffix) that `stem` cuts, the first that fits
+_SUFFIXES = ((5, "ing"), (4, "ed"), (4, "es"), (3, "s"))
 
 
 @dataclass(frozen=True)
@@ -41,13 +43,8 @@ def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
 
 def stem(word: str) -> str:
     """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
-    w = word
-    if len(w) > 5 and w.endswith("ing"):
-        w = w[:-3]
-    elif len(w) > 4 and w.endswith(("ed", "es")):
-        w = w[:-2]
-    elif len(w) > 3 and w.endswith("s") and not w.endswith("ss"):
-        w = w[:-1]
+    w = next((word[:-len(end)] for longer, end in _SUFFIXES
+              if len(word) > longer and word.endswith(end) and not word.endswith("ss")), word)
     if len(w) > 4 and w.endswith("y"):
         w = w[:-1]
     if len(w) > 3 and w.endswith("e"):
