@@ -351,13 +351,10 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition, or
     the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
     for child in () if clauses_only else verb.children:
-        if child.lower_ == "way":  # "make your way to the ottoman": the way is how, the ottoman is where
-            found = _object_of(doc, child)
-            if found is not None:
-                return found
-            continue
-        found = child.i if child.lower_ in ("one", "ones") else _noun_of(child)
-        if child.dep_ in ("dobj", "attr", "oprd") and found is not None:
+        way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
+        found = _object_of(doc, child) if way else \
+            child.i if child.lower_ in ("one", "ones") else _noun_of(child)
+        if found is not None and (way or child.dep_ in ("dobj", "attr", "oprd")):
             return found
     for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:

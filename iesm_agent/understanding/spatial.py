@@ -561,35 +561,26 @@ class _Reader:
 
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
-        toks, out, rel = self.toks, self.out, Relation(kind)
+        toks, rel = self.toks, Relation(kind)
         if kind in ("left", "right", "front", "behind") or kind in COMPASS:
-            if not self.side_of() and self.says_which_landmark(kind):
-                return i
-            if self.inverse_by_pronoun(kind):
+            if not self.side_of() and self.says_which_landmark(kind) or self.inverse_by_pronoun(kind):
                 return i
             if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
-                    or (kind == "behind" and self.cue_word is not None
-                        and self.structure.children(self.cue_word, "pobj")):
+                    or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
                 self.landmark(rel, i)  # "left of my bed", "behind a sofa"
-            out.relations.append(rel)
-            return i
-        if kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
+        elif kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
             if self.landmark(rel, i):
                 frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
                 self.cue_word = None if frm is None else self.words[frm]
                 if frm is not None and self.landmark(rel, frm):
                     i = self.last_landmark_end
-            out.relations.append(rel)
-            return i
-        if kind in ("closest", "farthest"):
+        elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
-            out.relations.append(rel)
+        elif self.inverse_by_pronoun(kind):
             return i
-        if self.inverse_by_pronoun(kind):
-            return i
-        if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
+        elif kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = self.next_cat(i)
             if j is not None and set(self.lemmas[self.cat_at[j].start:self.cat_at[j].end]) <= \
                     self.lex.words["weak_heads"]:
@@ -599,7 +590,7 @@ class _Reader:
                 return i  # "the one on top", "over there", a landmark we cannot read: nothing to relate to
             if kind == "between":
                 self.landmark(rel, i)
-        out.relations.append(rel)
+        self.out.relations.append(rel)
         return i
 
     def target(self) -> SpatialQuery:
