@@ -39,10 +39,10 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
-#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
-_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
-#: shorthand people type ("w/ a lid", "sofa + cushions")
-_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
+#: shorthand people type, spelt out in this order: "its" before a determiner, the contraction typed
+#: without its apostrophe ("its a chair"); "w/ a lid", "sofa + cushions"
+_SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)"), r"\1t's"),
+              (re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
               # a word of nearness that takes its noun as a preposition does ("nearer the door"):
               # with its "to", which the tagger needs to read it as a word of place, not a noun
               (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",
@@ -139,7 +139,6 @@ class Structure:
 
 def normalise(text: str) -> str:
     """`text` with typed shorthand spelt out, so the parser reads it as the words it stands for."""
-    text = _ITS.sub(r"\1t's", text)
     for pattern, words in _SHORTHAND:
         text = pattern.sub(words, text)
     return text

@@ -239,12 +239,9 @@ class _Reader:
         suffixes = self.lex.words["color_suffixes"]
         while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes
                                                    or self.word(end - 1).dep == "compound")):
-            if end in self.attr_at:
-                s = self.attr_at[end]
-                found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
-                end = s.start
-            else:
-                end -= 1
+            s = self.attr_at.get(end)  # an attribute ending here, else a word passed over
+            found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS] if s else []
+            end = s.start if s else end - 1
         return tuple(found)
 
     def compounds_before(self, start: int) -> frozenset[str]:

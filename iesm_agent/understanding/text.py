@@ -87,9 +87,8 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
             groups.append([s])
     span_idx = {i for s in attr_spans for i in range(s.start, s.end)}
     for group in groups:
-        start, end = group[0].start, group[-1].end
-        while end < len(lemmas) and lemmas[end] in suffixes:
-            end += 1
+        start = group[0].start
+        end = next((k for k in range(group[-1].end, len(lemmas)) if lemmas[k] not in suffixes), len(lemmas))
         used.update(range(start, end))
         kinds = {k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}
         for kind in sorted(kinds):
