@@ -215,14 +215,15 @@ class _Reader:
             j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
             for j in map(self.span_of.get, st.children(of, "pobj"))))
 
-    def located_by_pronoun(self) -> int | None:
-        """Start of the category span of what the cue places relative to the target when its object
-        only points back ("there is a crate [to its left]"): the noun the phrase hangs on, or the
-        subject or object of its verb; else None."""
+    def located_by_pronoun(self, kind: str) -> bool:
+        """Read the relation of `kind` seen from the target when the cue places another thing relative
+        to it, its object only pointing back ("there is a hamper [to its left]", "a fruit bowl sits on
+        the sideboard", said of the sideboard): the noun the phrase hangs on, or the subject or object
+        of its verb; False when there is none."""
         below, st = self.cue_object(), self.structure
-        if below is None or not any(self.points_back(k) for k in below) \
+        if kind not in INVERSE_RELATION or below is None or not any(self.points_back(k) for k in below) \
                 or any(self.span_of.get(k) is not None and not self.points_back(k) for k in below):
-            return None
+            return False
         k = st.words[self.cue_word].head
         while st.words[k].pos in ("ADP", "ADV") and st.words[k].head != k:
             k = st.words[k].head  # "to [its left]": the phrase's own head
@@ -230,7 +231,8 @@ class _Reader:
             k = next((c for c in st.children(k, "attr", "nsubj", "dobj")
                       if self.span_of.get(c) is not None), None)
         j = self.span_of.get(k)
-        return j if j is not None and j not in self.used and not self.points_back(k) else None
+        return j is not None and j not in self.used and not self.points_back(k) \
+            and self.seen_from_target(kind, j)
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured",
@@ -550,17 +552,11 @@ class _Reader:
         return at is not None and st.words[st.words[at].head].text.lower() not in _LOOKING \
             and any(self.span_of.get(k) is not None for k in st.children(at, "pobj"))
 
-    def inverse_by_pronoun(self, kind: str) -> bool:
-        """Read the relation seen from the target when the cue places another thing relative to it
-        ("there is a hamper to its left", "a fruit bowl sits on the sideboard"); False when it does not."""
-        located = self.located_by_pronoun() if kind in INVERSE_RELATION else None
-        return located is not None and self.seen_from_target(kind, located)
-
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
         toks, rel = self.toks, Relation(kind)
         if kind in ("left", "right", "front", "behind") or kind in COMPASS:
-            if not self.side_of() and self.says_which_landmark(kind) or self.inverse_by_pronoun(kind):
+            if not self.side_of() and self.says_which_landmark(kind) or self.located_by_pronoun(kind):
                 return i
             if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
                     or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
@@ -575,7 +571,7 @@ class _Reader:
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
-        elif self.inverse_by_pronoun(kind):
+        elif self.located_by_pronoun(kind):
             return i
         elif kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = self.next_cat(i)
