@@ -201,10 +201,9 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
-    if owner.dep == "attr" or owner.start in described:  # "in brown leather": the material is the target's
-        return False
-    if owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of the target
-        return False
+    if owner.dep == "attr" or owner.start in described \
+            or owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of it
+        return False  # "in brown leather": the material is the target's
     via = structure.words[owner.head].text.lower()
     places = _PLACE_PREPOSITIONS | {"at"} if place_ok else frozenset()
     return not (owner.dep == "pobj" and (via in _PART_WORDS or via in places))
