@@ -90,12 +90,10 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
         start = group[0].start
         end = next((k for k in range(group[-1].end, len(lemmas)) if lemmas[k] not in suffixes), len(lemmas))
         used.update(range(start, end))
-        kinds = {k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}
-        for kind in sorted(kinds):
+        for kind in sorted({k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}):
             values = frozenset(v for s in group for k, v in s.kinds if k == kind)
             words = lemmas[start:end] if kind == "color" or len(group) == 1 else lemmas[group[0].start:group[0].end]
-            surface, base = _norm_surface(lex, words)
-            slots.append(Slot(kind, surface, base, values))
+            slots.append(Slot(kind, *_norm_surface(lex, words), values))
     for i in range(len(lemmas) - 1):
         if (lemmas[i + 1] in lex.words["color_suffixes"] and i not in span_idx and i not in used
                 and lemmas[i].isalpha() and len(lemmas[i]) > 2 and lemmas[i] not in lex.shades):
