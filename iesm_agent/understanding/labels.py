@@ -56,9 +56,8 @@ def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
             if joiner == "of" and left[-1] in lex.words["collective_strict"] | lex.words["weak_heads"]:
                 return _phrase_concepts(lex, right)
             main = _phrase_concepts(lex, left)
-            for c, w in _phrase_concepts(lex, right).items():
-                main.setdefault(c, w * _SECONDARY_WEIGHT)
-            return main or _phrase_concepts(lex, right)
+            return main | {c: w * _SECONDARY_WEIGHT for c, w in _phrase_concepts(lex, right).items()
+                           if c not in main}
     return _phrase_concepts(lex, words)
 
 

@@ -57,8 +57,6 @@ def strip_motion(toks: list[str]) -> list[str]:
     for i in range(len(toks)):
         if i not in drop and is_destination(toks, i, 1):
             start = _verb_before(toks, i)
-            end = i + 1
-            while end < len(toks) and toks[end] in DESTINATION_PREPS:
-                end += 1
+            end = next((k for k in range(i + 1, len(toks)) if toks[k] not in DESTINATION_PREPS), len(toks))
             drop.update(range(start if start >= 0 else i, end))
     return [t for k, t in enumerate(toks) if k not in drop]

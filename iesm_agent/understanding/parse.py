@@ -39,10 +39,10 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 NOUNS = ("NOUN", "PROPN")
-#: "its" before a determiner is the contraction people type without its apostrophe ("its a chair")
-_ITS = re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)")
-#: shorthand people type ("w/ a lid", "sofa + cushions")
-_SHORTHAND = ((re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
+#: shorthand people type, spelt out in this order: "its" before a determiner, the contraction typed
+#: without its apostrophe ("its a chair"); "w/ a lid", "sofa + cushions"
+_SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)"), r"\1t's"),
+              (re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
               # a word of nearness that takes its noun as a preposition does ("nearer the door"):
               # with its "to", which the tagger needs to read it as a word of place, not a noun
               (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",
@@ -122,9 +122,15 @@ class Structure:
             k = self.words[k].head
         return k == ancestor
 
-    def children(self, k: int, dep: str) -> list[int]:
-        """Indices of the words the parse attaches to word `k` with relation `dep`."""
-        return [n for n, w in enumerate(self.words) if w.head == k and n != k and w.dep == dep]
+    def children(self, k: int | set[int | None] | None, *deps: str) -> list[int]:
+        """Indices of the words the parse attaches to word `k` (or to any of the words `k`) with
+        one of the relations `deps`."""
+        heads = k if isinstance(k, set) else {k}
+        return [n for n, w in enumerate(self.words) if w.head in heads and n not in heads and w.dep in deps]
+
+    def of_phrase(self, k: int | None) -> int | None:
+        """Index of the preposition "of" that word `k` takes ("the side [of] the piano"), or None."""
+        return next((n for n in self.children(k, "prep") if self.words[n].text.lower() == "of"), None)
 
     def index_at(self, offset: int) -> int | None:
         """Index of the word that covers character `offset`, or None."""
@@ -133,7 +139,6 @@ class Structure:
 
 def normalise(text: str) -> str:
     """`text` with typed shorthand spelt out, so the parser reads it as the words it stands for."""
-    text = _ITS.sub(r"\1t's", text)
     for pattern, words in _SHORTHAND:
         text = pattern.sub(words, text)
     return text
@@ -345,13 +350,10 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition, or
     the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
     for child in () if clauses_only else verb.children:
-        if child.lower_ == "way":  # "make your way to the ottoman": the way is how, the ottoman is where
-            found = _object_of(doc, child)
-            if found is not None:
-                return found
-            continue
-        found = child.i if child.lower_ in ("one", "ones") else _noun_of(child)
-        if child.dep_ in ("dobj", "attr", "oprd") and found is not None:
+        way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
+        found = _object_of(doc, child) if way else \
+            child.i if child.lower_ in ("one", "ones") else _noun_of(child)
+        if found is not None and (way or child.dep_ in ("dobj", "attr", "oprd")):
             return found
     for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:

@@ -40,6 +40,11 @@ _TYPICAL = 0.9
 _PLACE_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
+def _named(info: QueryInfo | SimpleNamespace) -> bool:
+    """True when the query (or its draft) names a specific category as its target."""
+    return any(w >= 1.0 for w in info.targets.values())
+
+
 @dataclass(frozen=True, eq=False)
 class QueryInfo:
     """What a query asks for (immutable: `analyse_query` memoises it and every caller shares it).
@@ -80,10 +85,7 @@ class QueryInfo:
             if isinstance(value, dict):
                 object.__setattr__(self, f.name, MappingProxyType(dict(value)))
 
-    @property
-    def named(self) -> bool:
-        """True when the query names a specific category as its target."""
-        return any(w >= 1.0 for w in self.targets.values())
+    named = property(_named)
 
 
 def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
@@ -123,15 +125,10 @@ class _Token(str):
 
     at: int
 
-
-def _request_tokens(lex: Lexicon, text: str, where: tuple[int, int]) -> list[str]:
-    """Lexicon tokens of `text[where[0]:where[1]]`, each carrying its offset in `text`."""
-    out = []
-    for token, at in lex.token_offsets(text[where[0]:where[1]]):
-        tok = _Token(token)
-        tok.at = where[0] + at
-        out.append(tok)
-    return out
+    def __new__(cls, token: str, at: int = -1) -> _Token:  # (a copy passes the text alone, then its `at`)
+        self = super().__new__(cls, token)
+        self.at = at
+        return self
 
 
 @dataclass(frozen=True)
@@ -204,10 +201,9 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
-    if owner.dep == "attr" or owner.start in described:  # "in brown leather": the material is the target's
-        return False
-    if owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of the target
-        return False
+    if owner.dep == "attr" or owner.start in described \
+            or owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of it
+        return False  # "in brown leather": the material is the target's
     via = structure.words[owner.head].text.lower()
     places = _PLACE_PREPOSITIONS | {"at"} if place_ok else frozenset()
     return not (owner.dep == "pobj" and (via in _PART_WORDS or via in places))
@@ -233,7 +229,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     marker read apart and what comes before the request phrase kept as the preamble."""
     structure = parse_request(normalise(lex.respell(text)))
     corrected = structure.text  # without the vessels of a wished portion ("a jug of juice": a juice)
-    tokens = _request_tokens(lex, corrected, structure.request)
+    start, end = structure.request
+    tokens = [_Token(token, start + at) for token, at in lex.token_offsets(corrected[start:end])]
     marker = _exclusion_at(tokens)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
@@ -313,10 +310,6 @@ def _draft(text: str) -> SimpleNamespace:
     """A mutable draft of a `QueryInfo` with its defaults, filled while the request is read."""
     return SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)
-
-
-def _named(info) -> bool:
-    return any(w >= 1.0 for w in info.targets.values())
 
 
 def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:

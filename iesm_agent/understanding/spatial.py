@@ -209,29 +209,30 @@ class _Reader:
     def side_of(self) -> bool:
         """True when the side word's noun has an "of": a landmark's side ("the right side of the piano")."""
         k, st = self.noun_of(self.cue_word), self.structure
-        of = next((n for n in st.children(k, "prep") if st.words[n].text.lower() == "of"), None)
+        of = st.of_phrase(k)
         owner = self.span_of.get(k)  # "the left stool of the three stools": which of them, not a landmark
         return of is not None and (owner is None or not any(
             j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
             for j in map(self.span_of.get, st.children(of, "pobj"))))
 
-    def located_by_pronoun(self) -> int | None:
-        """Start of the category span of what the cue places relative to the target when its object
-        only points back ("there is a crate [to its left]"): the noun the phrase hangs on, or the
-        subject or object of its verb; else None."""
+    def located_by_pronoun(self, kind: str) -> bool:
+        """Read the relation of `kind` seen from the target when the cue places another thing relative
+        to it, its object only pointing back ("there is a hamper [to its left]", "a fruit bowl sits on
+        the sideboard", said of the sideboard): the noun the phrase hangs on, or the subject or object
+        of its verb; False when there is none."""
         below, st = self.cue_object(), self.structure
-        if below is None or not any(self.points_back(k) for k in below) \
+        if kind not in INVERSE_RELATION or below is None or not any(self.points_back(k) for k in below) \
                 or any(self.span_of.get(k) is not None and not self.points_back(k) for k in below):
-            return None
+            return False
         k = st.words[self.cue_word].head
         while st.words[k].pos in ("ADP", "ADV") and st.words[k].head != k:
             k = st.words[k].head  # "to [its left]": the phrase's own head
         if st.words[k].pos not in ("NOUN", "PROPN"):
-            k = next((c for c in range(len(st.words)) if st.words[c].head == k and c != k
-                      and st.words[c].dep in ("attr", "nsubj", "dobj")
-                      and self.span_of.get(c) is not None), None)
+            k = next((c for c in st.children(k, "attr", "nsubj", "dobj")
+                      if self.span_of.get(c) is not None), None)
         j = self.span_of.get(k)
-        return j if j is not None and j not in self.used and not self.points_back(k) else None
+        return j is not None and j not in self.used and not self.points_back(k) \
+            and self.seen_from_target(kind, j)
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured",
@@ -240,12 +241,9 @@ class _Reader:
         suffixes = self.lex.words["color_suffixes"]
         while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes
                                                    or self.word(end - 1).dep == "compound")):
-            if end in self.attr_at:
-                s = self.attr_at[end]
-                found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS]
-                end = s.start
-            else:
-                end -= 1
+            s = self.attr_at.get(end)  # an attribute ending here, else a word passed over
+            found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS] if s else []
+            end = s.start if s else end - 1
         return tuple(found)
 
     def compounds_before(self, start: int) -> frozenset[str]:
@@ -276,26 +274,9 @@ class _Reader:
         prepositions ("nearest [to] the fireplace", "the far side [of] the piano") and their conjuncts."""
         st = self.structure
         owners = {self.cue_word, self.noun_of(self.cue_word)}
-        owners |= {k for k, w in enumerate(st.words) if w.head in owners and w.dep == "prep" and k not in owners}
-        objects = {k for k, w in enumerate(st.words) if w.head in owners and w.dep in _PHRASE_HEADS and k not in owners}
-        return objects | {k for k, w in enumerate(st.words) if w.head in objects and w.dep == "conj"}
-
-    def viewpoint_clause_end(self, i: int) -> int | None:
-        """Offset of the comma closing the viewpoint clause ("facing the window[,] ...") whose cue
-        ends before token `i`, when the parse's target lies inside that clause; else None."""
-        at = self.target_at
-        if at is None or at < i:
-            return None
-        comma = self.corrected.find(",", self.offsets[i - 1])
-        return comma if comma >= 0 and self.offsets[at] < comma else None
-
-    def named_after(self, comma: int) -> int | None:
-        """Start of the first free category span after offset `comma` that no preposition or verb
-        takes ("the shelf on the left", not "next to [the chair]"), or None."""
-        st = self.structure
-        return next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
-                     and self.words[j] is not None and st.words[self.noun_of(self.words[j])].dep not in _LANDMARK_DEPS),
-                    None)
+        owners |= set(st.children(owners, "prep"))
+        objects = set(st.children(owners, *_PHRASE_HEADS))
+        return objects | set(st.children(objects, "conj"))
 
     def turned_to(self, k: int | None) -> bool:
         """True when the parsed side word `k` is what a verb of turning takes, directly or through
@@ -321,12 +302,12 @@ class _Reader:
             return False
         st, k = self.structure, self.words[i]
         word = st.words[k]
-        if st.children(k, "amod") or st.children(k, "compound") or i in self.part_described:
+        if st.children(k, "amod", "compound") or i in self.part_described:
             return False  # the top itself described ("a glass top table"): a part, not a height
         if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place
             return self.target_at is not None and self.span_of.get(word.head) == self.target_at
         if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") \
-                or any(st.words[c].text.lower() == "of" for c in st.children(k, "prep")):
+                or st.of_phrase(k) is not None:
             return False
         owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
         if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
@@ -338,12 +319,11 @@ class _Reader:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
         objects = self.cue_objects()  # with an apposition the parser hangs "one" on ("the metal [one]")
-        objects |= {k for k, w in enumerate(self.structure.words) if w.head in objects and w.dep == "appos"}
+        objects |= set(self.structure.children(objects, "appos"))
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
-                and not any(self.structure.words[c].text.lower() == "of"  # "one of the plates": the plates
-                            for c in self.structure.children(self.words[one], "prep")):
+                and self.structure.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
             at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
         else:
             at = self.next_cat(pos)
@@ -444,18 +424,7 @@ class _Reader:
         if kind == "from":
             return self.ordinal_from(i, nxt)
         if kind == "facing":
-            comma = self.viewpoint_clause_end(i)
-            if comma is not None:  # the parse took the clause's own noun for the target
-                after = self.named_after(comma)
-                if after is not None:  # "facing the window, the shelf on the left": the window is the viewpoint
-                    out.facing, self.target_at = tuple(self.cat_at[self.target_at].values("cat")), after
-                    self.used.add(after)
-                return i  # else "facing the stools, the one on the left": of the stools' kind
-            j = self.next_cat(i)
-            if j is not None:
-                self.used.add(j)
-                out.facing = tuple(self.cat_at[j].values("cat"))
-            return i
+            return self.facing(i)
         if kind in ("corner", "middle") and nxt == "of":
             return self.place_of(i, kind)
         if kind == "middle" and self.says_which_landmark(kind):
@@ -473,6 +442,27 @@ class _Reader:
             out.relations.append(Relation(kind, value="group"))
             return i
         return self.landmark_relation(i, kind, nxt)
+
+    def facing(self, i: int) -> int:
+        """The viewpoint of a cue ending before `i` ("facing the bed"). When the parse's target lies in a
+        viewpoint clause the comma closes ("facing the window, the shelf on the left"), the target is the
+        first free category after the comma that no preposition or verb takes; with none ("facing the
+        stools, the one on the left"), of the clause noun's kind."""
+        at, st = self.target_at, self.structure
+        comma = -1 if at is None or at < i else self.corrected.find(",", self.offsets[i - 1])
+        if comma >= 0 and self.offsets[at] < comma:
+            after = next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
+                          and self.words[j] is not None
+                          and st.words[self.noun_of(self.words[j])].dep not in _LANDMARK_DEPS), None)
+            if after is not None:
+                self.out.facing, self.target_at = tuple(self.cat_at[at].values("cat")), after
+                self.used.add(after)
+            return i
+        j = self.next_cat(i)
+        if j is not None:
+            self.used.add(j)
+            self.out.facing = tuple(self.cat_at[j].values("cat"))
+        return i
 
     def viewer_place(self) -> bool:
         """True when the cue word places the one who looks, not the target: it hangs on "stand"
@@ -562,43 +552,28 @@ class _Reader:
         return at is not None and st.words[st.words[at].head].text.lower() not in _LOOKING \
             and any(self.span_of.get(k) is not None for k in st.children(at, "pobj"))
 
-    def inverse_by_pronoun(self, kind: str) -> bool:
-        """Read the relation seen from the target when the cue places another thing relative to it
-        ("there is a hamper to its left", "a fruit bowl sits on the sideboard"); False when it does not."""
-        located = self.located_by_pronoun() if kind in INVERSE_RELATION else None
-        return located is not None and self.seen_from_target(kind, located)
-
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
-        toks, out, rel = self.toks, self.out, Relation(kind)
+        toks, rel = self.toks, Relation(kind)
         if kind in ("left", "right", "front", "behind") or kind in COMPASS:
-            if not self.side_of() and self.says_which_landmark(kind):
-                return i
-            if self.inverse_by_pronoun(kind):
+            if not self.side_of() and self.says_which_landmark(kind) or self.located_by_pronoun(kind):
                 return i
             if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
-                    or (kind == "behind" and self.cue_word is not None
-                        and self.structure.children(self.cue_word, "pobj")):
+                    or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
                 self.landmark(rel, i)  # "left of my bed", "behind a sofa"
-            out.relations.append(rel)
-            return i
-        if kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
+        elif kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
             if self.landmark(rel, i):
                 frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
                 self.cue_word = None if frm is None else self.words[frm]
                 if frm is not None and self.landmark(rel, frm):
                     i = self.last_landmark_end
-            out.relations.append(rel)
-            return i
-        if kind in ("closest", "farthest"):
+        elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
-            out.relations.append(rel)
+        elif self.located_by_pronoun(kind):
             return i
-        if self.inverse_by_pronoun(kind):
-            return i
-        if kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
+        elif kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = self.next_cat(i)
             if j is not None and set(self.lemmas[self.cat_at[j].start:self.cat_at[j].end]) <= \
                     self.lex.words["weak_heads"]:
@@ -608,7 +583,7 @@ class _Reader:
                 return i  # "the one on top", "over there", a landmark we cannot read: nothing to relate to
             if kind == "between":
                 self.landmark(rel, i)
-        out.relations.append(rel)
+        self.out.relations.append(rel)
         return i
 
     def target(self) -> SpatialQuery:

@@ -9,6 +9,8 @@ from dataclasses import dataclass
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
+#: (length a word must exceed, suffix) that `stem` cuts, the first that fits
+_SUFFIXES = ((5, "ing"), (4, "ed"), (4, "es"), (3, "s"))
 
 
 @dataclass(frozen=True)
@@ -41,13 +43,8 @@ def word_stems(lex: Lexicon, lemmas: list[str]) -> set[str]:
 
 def stem(word: str) -> str:
     """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
-    w = word
-    if len(w) > 5 and w.endswith("ing"):
-        w = w[:-3]
-    elif len(w) > 4 and w.endswith(("ed", "es")):
-        w = w[:-2]
-    elif len(w) > 3 and w.endswith("s") and not w.endswith("ss"):
-        w = w[:-1]
+    w = next((word[:-len(end)] for longer, end in _SUFFIXES
+              if len(word) > longer and word.endswith(end) and not word.endswith("ss")), word)
     if len(w) > 4 and w.endswith("y"):
         w = w[:-1]
     if len(w) > 3 and w.endswith("e"):
@@ -90,16 +87,13 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
             groups.append([s])
     span_idx = {i for s in attr_spans for i in range(s.start, s.end)}
     for group in groups:
-        start, end = group[0].start, group[-1].end
-        while end < len(lemmas) and lemmas[end] in suffixes:
-            end += 1
+        start = group[0].start
+        end = next((k for k in range(group[-1].end, len(lemmas)) if lemmas[k] not in suffixes), len(lemmas))
         used.update(range(start, end))
-        kinds = {k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}
-        for kind in sorted(kinds):
+        for kind in sorted({k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}):
             values = frozenset(v for s in group for k, v in s.kinds if k == kind)
             words = lemmas[start:end] if kind == "color" or len(group) == 1 else lemmas[group[0].start:group[0].end]
-            surface, base = _norm_surface(lex, words)
-            slots.append(Slot(kind, surface, base, values))
+            slots.append(Slot(kind, *_norm_surface(lex, words), values))
     for i in range(len(lemmas) - 1):
         if (lemmas[i + 1] in lex.words["color_suffixes"] and i not in span_idx and i not in used
                 and lemmas[i].isalpha() and len(lemmas[i]) > 2 and lemmas[i] not in lex.shades):
