@@ -41,8 +41,10 @@ MAX_ARGUMENT_CHARS = 2000
 #: ids of the top of the fused ranking find_goal reports
 RANKING_SHOWN = 5
 SPEC_FORMATS = ("json", "openai", "mcp")
-#: answered once per map at start-up; descriptive, so the offline model's embedding path is warm too
-WARM_UP_QUERY = "a cosy blue wooden seat for reading near the window in the living room"
+#: answered once per map at start-up: a descriptive one, so the offline model's embedding path is
+#: warm too, and one that names no kind, so its reading of uses by meaning is
+WARM_UP_QUERIES = ("a cosy blue wooden seat for reading near the window in the living room",
+                   "somewhere to put my feet up with a book")
 _MAP_ARG_DOC = "\n\nArgs:\n    map: the served map's name (scene id; default: the first map)"
 
 
@@ -126,7 +128,8 @@ class MapService:
                   + (f" ({encoder.backend.kind})" if encoder else ""), file=sys.stderr, flush=True)
         for name in self.maps:
             try:
-                await self.find_goal(WARM_UP_QUERY, map=name)
+                for query in WARM_UP_QUERIES:
+                    await self.find_goal(query, map=name)
             except IesmError as exc:
                 print(f"iesm serve: warning: warm-up query on {name} failed: {exc}", file=sys.stderr)
             if navigation_available():
