@@ -578,7 +578,9 @@ def _nearest_uses(encoder, text: str) -> dict[str, float]:
     within _USE_MARGIN of the best give their categories (core 1.0-0.8, related 0.5) times their
     score over the best. Empty when no entry is near enough."""
     vectors, entry_of = _cue_vectors(encoder)
-    sims = vectors @ encoder.encode([text])[0]
+    # einsum, not `@`: at this size BLAS wakes its thread pool, whose spinning costs a server more
+    # CPU than the product itself (0.09 ms on one thread)
+    sims = np.einsum("kd,d->k", vectors, encoder.encode([text])[0])
     best = np.full(len(load_lexicon().affordances), -1.0)
     np.maximum.at(best, entry_of, sims)
     top = float(best.max())
@@ -597,7 +599,7 @@ def _cue_vectors(encoder) -> tuple[np.ndarray, np.ndarray]:
     the entry each belongs to; embedded once per encoder (and kept in its on-disk store)."""
     cues = sorted((" ".join(key), int(value)) for key, kinds in load_lexicon().phrases.items()
                   for kind, value in kinds if kind == "cue")
-    rows = np.asarray(encoder.encode([c for c, _ in cues]), np.float64)
+    rows = np.asarray(encoder.encode([c for c, _ in cues]), np.float32)
     rows.flags.writeable = False
     return rows, np.array([i for _, i in cues], dtype=np.int64)
 
