@@ -26,6 +26,12 @@ def test_alternatives_and_secondary_nouns():
     assert label_concepts("zorblax") == ()
 
 
+def test_a_label_that_opens_with_a_joining_word_is_read_not_raised():
+    # a mapper's label may start with "of" or "with"; the join is the one between two words
+    assert label_concepts("of mugs of cocoa")[0] == ("cup", 1.0)  # the lexicon reads a mug as a cup
+    assert dict(label_concepts("with lid with handle"))
+
+
 def test_category_similarity_is_directional():
     lex = load_lexicon()
     assert lex.concept_sim("chair", "armchair") > lex.concept_sim("armchair", "chair") > 0

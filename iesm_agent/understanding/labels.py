@@ -51,7 +51,7 @@ def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
     # "set of towels" -> towels; "box of paper" -> box (+ paper); "bowl with sweets" -> bowl
     for joiner in ("of", "with", "for", "on", "in", "and"):
         if joiner in words[1:-1]:
-            i = words.index(joiner)
+            i = words.index(joiner, 1)  # "of cups of tea": the joiner between two words
             left, right = words[:i], words[i + 1:]
             if joiner == "of" and left[-1] in lex.words["collective_strict"] | lex.words["weak_heads"]:
                 return _phrase_concepts(lex, right)
