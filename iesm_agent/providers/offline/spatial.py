@@ -367,7 +367,7 @@ def rank(prompt: Prompt) -> dict:
     if sq.target:
         # the target's appearance wherever the request gives it (before a participle: "the olive
         # lacquered stool"; in a later sentence: "... the teal one, I think"), not only in the relation's clause
-        attrs = tuple(dict.fromkeys(sq.attrs + tuple(reading.attrs)))
+        attrs = tuple(dict.fromkeys(sq.attrs + reading.attrs))
         kind = _of_kind(scene, sq.target, attrs)
     else:  # "the one on the left": anything that is not a landmark
         marks = [c for r in sq.relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]

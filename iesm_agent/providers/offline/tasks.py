@@ -380,10 +380,7 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
     comp = np.zeros((n, _N_COMPONENTS), dtype=np.float64)
     if len(block.pair_row):
         fits = _concept_fits(block, _weights_key(q.targets), _weights_key(q.afford), _weights_key(q.kin))
-        products = block.pair_weight[:, None] * fits[block.pair_concept]
-        best = np.zeros((n, 3), dtype=np.float64)
-        np.maximum.at(best, block.pair_row, products)
-        comp[:, _LABEL], comp[:, _AFFORD], comp[:, _KIN] = best[:, 0], best[:, 1], best[:, 2]
+        comp[:, [_LABEL, _AFFORD, _KIN]] = _best_over_labels(block, fits)
     if q.head_words:  # the label literally says (part of) what the query says
         said = np.array([0.05 * len(q.head_words & words) / len(q.head_words) for words in block.label_words])
         label = comp[:, _LABEL]
@@ -401,6 +398,14 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
     if len(memo) < 4096:
         memo[key] = (block, comp)
     return comp
+
+
+def _best_over_labels(block: _Block, fits: np.ndarray) -> np.ndarray:
+    """(N, K) per candidate of `block`, the best weight x fit over its label's categories, from
+    `fits` (C, K): K fits of each of the block's distinct categories (0 where none fits)."""
+    best = np.zeros((len(block.records), fits.shape[1]), dtype=np.float64)
+    np.maximum.at(best, block.pair_row, block.pair_weight[:, None] * fits[block.pair_concept])
+    return best
 
 
 def _text_overlap(q: QueryInfo, records: list[Record]) -> list[float]:
@@ -563,11 +568,9 @@ def _with_uses(q: QueryInfo, comp: np.ndarray, encoder, block: _Block) -> np.nda
     if not uses or not len(block.pair_row):
         return comp
     lex = load_lexicon()
-    fits = np.array([_by_kind(lex, uses, cc) for cc in block.concepts], dtype=np.float64)
-    best = np.zeros(len(block.records), dtype=np.float64)
-    np.maximum.at(best, block.pair_row, block.pair_weight * fits[block.pair_concept])
+    fits = np.array([[_by_kind(lex, uses, cc)] for cc in block.concepts], dtype=np.float64)
     out = comp.copy()
-    out[:, _USE] = best
+    out[:, [_USE]] = _best_over_labels(block, fits)
     out.flags.writeable = False
     return out
 
