@@ -319,6 +319,53 @@ def _extremes(text: str) -> list[str]:
     return [r.value for r in parse_query(text).relations if r.kind == "extreme"]
 
 
+def test_a_negation_ends_with_its_sentence():
+    pot = parse_query("Not the big pan. The small red pot on the hob.")
+    assert pot.target == ("pot",) and [(r.kind, r.negated) for r in pot.relations if r.kind != "extreme"] == [("on", False)]
+    mirror = parse_query("Not that one! The round mirror over the basin.")
+    assert [(r.kind, r.negated) for r in mirror.relations] == [("above", False)]
+
+
+def test_the_one_after_a_leading_exclusion_has_its_own_attributes():
+    # the kind comes from the excluded phrase, the colour from the one asked for
+    mug = parse_query("Not the red mug by the sink, the blue one.")
+    assert mug.target == ("cup",) and mug.attrs == (("color", "blue"),)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the vase on the shelf of the hall cabinet", [("in", [("cabinet",)], "")]),
+    ("the cushion on the seat of the sofa", [("in", [("sofa",)], "")]),
+    ("the towel on the shelf of the bathroom", [("on", [("shelf",)], "")]),  # a room is no whole
+    ("the left stool of the three stools", [("left", [], "")]),              # nor one of the same kind
+])
+def test_a_part_of_a_landmark_stands_for_the_landmark(text, expected):
+    assert _relations(text) == expected
+
+
+def test_on_a_shelf_of_a_bookcase_is_in_the_bookcase_at_that_height(tmp_path):
+    store = make_store(tmp_path, [
+        box(1, "bookcase", (1.0, 0.3, 1.0), (0.8, 0.3, 2.0)),
+        box(2, "book", (1.0, 0.3, 1.6), (0.2, 0.15, 0.25)),   # high up in the bookcase
+        box(3, "book", (0.8, 0.3, 0.4), (0.2, 0.15, 0.25)),   # low in it
+        box(4, "shelf", (4.0, 3.8, 1.8), (0.8, 0.25, 0.04)),  # a wall shelf across the room, higher still
+        box(5, "book", (4.0, 3.8, 1.945), (0.2, 0.15, 0.25)),  # resting on the wall shelf
+    ])
+    assert spatial(store, "the book on the top shelf of the bookcase")[0] == 2
+    assert spatial(store, "the book on the lowest shelf of the bookcase")[0] == 3
+    assert spatial(store, "the book on the wall shelf")[0] == 5
+
+
+def test_a_room_said_before_a_landmark_picks_the_landmark_in_that_room(tmp_path):
+    store = make_store(tmp_path, [
+        {**box(1, "bookshelf", (0.3, 1.0, 0.9), (0.35, 1.0, 1.8)), "room": "living room"},
+        {**box(2, "book", (0.7, 1.0, 0.1), (0.2, 0.15, 0.05)), "room": "living room"},
+        {**box(3, "bookshelf", (6.3, 1.0, 0.9), (0.35, 1.0, 1.8)), "room": "office"},
+        {**box(4, "book", (5.9, 1.0, 0.1), (0.2, 0.15, 0.05)), "room": "office"},
+    ])
+    assert spatial(store, "the book beside the office bookcase")[0] == 4
+    assert spatial(store, "the book beside the living room bookcase")[0] == 2
+
+
 @pytest.mark.parametrize("text, expected", [
     # a height word on the target's own noun, or the target "on top" / "at the bottom"
     ("grab the bottom drawer", ["low"]),
@@ -327,6 +374,9 @@ def _extremes(text: str) -> list[str]:
     ("the crate at the bottom", ["low"]),
     # on another thing's noun, or said of what lies on the target: not the target's height
     ("the mug on the top shelf", []),
+    # on a part of a landmark: where the target sits in it
+    ("the box on the bottom shelf of the wardrobe", ["low"]),
+    ("the vase on the top shelf of the hall cabinet", ["high"]),
     ("the dresser that has a radio resting on top", []),
     # a place on a plan ("top left") and a described top ("a marble top") are not heights
     ("the stool in the top left corner", []),
@@ -413,6 +463,17 @@ def test_compass_words_are_sides_on_the_plan_whoever_looks(room, query, best):
 ])
 def test_a_one_the_relation_takes_is_another_of_the_targets_kind(room, query, best):
     assert spatial(room, query)[0] == best
+
+
+@pytest.mark.parametrize("text", ["red mug beside blue one", "a red mug beside a blue one"])
+def test_a_one_the_parser_hangs_as_a_number_is_still_the_landmark(text):
+    # without its article "blue one" parses as an adjective with a number; it is another mug all the same
+    q = parse_query(text)
+    assert [(r.kind, r.landmarks, r.landmark_attrs) for r in q.relations] == [("near", [("cup",)], [(("color", "blue"),)])]
+
+
+def test_one_as_a_count_of_a_noun_is_no_landmark():
+    assert _relations("the desk with only one lamp on it") == [("with", [("lamp",)], "")]
 
 
 def test_a_landmark_of_the_targets_own_kind_is_told_apart_by_its_attributes(tmp_path):

@@ -106,6 +106,13 @@ def rests_on(a: Boxes, b: Boxes) -> np.ndarray:
             & lifted & (a.ids[:, None] != b.ids[None, :]))
 
 
+def is_within(a: Boxes, b: Boxes) -> np.ndarray:
+    """(Na, Nb) bool: a's centre lies within b's height and their footprints overlap (on one of b's
+    shelves, in one of its compartments)."""
+    return ((xy_overlap(a, b) >= OVERLAP_MIN) & (a.center[:, None, 2] >= b.lo[None, :, 2])
+            & (a.center[:, None, 2] <= b.hi[None, :, 2]) & (a.ids[:, None] != b.ids[None, :]))
+
+
 def is_under(a: Boxes, b: Boxes) -> np.ndarray:
     """(Na, Nb) bool: a is under b (footprints overlap, a's centre below b's, a's top not above b's)."""
     return ((xy_overlap(a, b) >= OVERLAP_MIN) & (a.hi[:, None, 2] <= b.hi[None, :, 2] + REST_TOLERANCE)

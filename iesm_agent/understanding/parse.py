@@ -47,8 +47,10 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
               # with its "to", which the tagger needs to read it as a word of place, not a noun
               (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",
                           re.IGNORECASE), r"\1 to "))
-#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its punctuation
-_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,\u2013\u2014]*?(?:[:;,\u2013\u2014]| - )\s*", re.IGNORECASE)
+#: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its
+#: punctuation; a full stop ends it too ("Not the big pan. The small pot.": the next sentence asks)
+_FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,.!?\u2013\u2014]*?(?:[:;,\u2013\u2014]|[.!?](?=\s)| - )\s*",
+                                re.IGNORECASE)
 #: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
 _NAMING = ("dobj", "attr", "nsubj", "ROOT")
 

@@ -11,7 +11,7 @@ from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, strip_motion
 from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
-from .text import Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
+from .text import SENTENCE_MARK, Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
 _UNSPECIFIC = frozenset({"object"})
@@ -234,9 +234,11 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     marker = _exclusion_at(tokens)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
-    if marker is not None:
-        ruled_out.append(analyse_query(" ".join(tokens[marker[1]:])))
-        tokens = tokens[:marker[0]]
+    if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the shelf.")
+        end = min((k for k in clause_breaks(corrected, [(t, t.at) for t in tokens], SENTENCE_MARK) if k > marker[1]),
+                  default=len(tokens))
+        ruled_out.append(analyse_query(" ".join(tokens[marker[1]:end])))
+        tokens = tokens[:marker[0]] + tokens[end:]
     request, preamble = _split_preamble(lex, tokens)
     if structure.target is None or structure.words[structure.target].start >= request[0].at:
         tokens = request  # what comes before the request phrase only says why

@@ -13,7 +13,7 @@ from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import Word, normalise, parse_request
 from .query import analyse_query
-from .text import clause_breaks, lemmatise
+from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
 #: relation cues (word sequences, "|" between them) by the relation they name
 _CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in {
@@ -79,7 +79,8 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
 
 @dataclass
 class Relation:
-    """One relation: `kind` (a `_CUES` value, "extreme" or "ordinal"), landmark categories
+    """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark,
+    "on the top shelf of the bookcase"), landmark categories
     (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
     high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the target's
     kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
@@ -143,12 +144,14 @@ class _Reader:
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas, clause_breaks(corrected, kept))
+        self.sentence_starts = clause_breaks(corrected, kept, SENTENCE_MARK)
         self.cat_at = {s.start: s for s in spans if s.has("cat") and not (  # "toilet": category and room
             s.end - s.start == 1 and (  # one word that is a verb here: posture after motion ("go sit")
                 toks[s.start] in POSTURE_VERBS and s.start > 0 and toks[s.start - 1] in MOTION_VERBS
                 # or a participle ("the plant standing by the tv"), not the noun of its lemma
                 or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+        self.room_at = {s.end: s for s in spans if s.has("room") and not s.has("cat")}
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
@@ -162,6 +165,7 @@ class _Reader:
                         for i, word in reversed(list(enumerate(self.words))) if word is not None}
         self.target_at = self.parsed_target()
         self.used: set[int] = set() if self.target_at is None else {self.target_at}
+        self.parts: set[int] = set()  # starts of the landmark spans that name a part of another landmark
 
     def word(self, i: int) -> Word:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
@@ -246,6 +250,12 @@ class _Reader:
             end = s.start if s else end - 1
         return tuple(found)
 
+    def stand_in_for(self, target: int) -> int:
+        """Where the target's own attributes are read: at the "one" the parse takes as the target when
+        the kind was named only in a leading exclusion ("Not the red mug, the blue one"); else `target`."""
+        one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
+        return one if self.words[target] is None and one is not None and self.toks[one] == "one" else target
+
     def compounds_before(self, start: int) -> frozenset[str]:
         """Lemmas of the nouns that modify the noun at `start` from its left ("the bar seat": bar)."""
         end = start
@@ -304,8 +314,9 @@ class _Reader:
         word = st.words[k]
         if st.children(k, "amod", "compound") or i in self.part_described:
             return False  # the top itself described ("a glass top table"): a part, not a height
-        if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place
-            return self.target_at is not None and self.span_of.get(word.head) == self.target_at
+        if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place;
+            owner = self.span_of.get(word.head)  # of a part of a landmark: "on the top shelf of the bookcase"
+            return self.target_at is not None and owner is not None and owner in (self.target_at, *self.parts)
         if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") \
                 or st.of_phrase(k) is not None:
             return False
@@ -315,11 +326,26 @@ class _Reader:
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
         return owner is not None and (self.span_of.get(owner) == self.target_at or self.points_back(owner))
 
+    def whole_of(self, at: int) -> int | None:
+        """Start of the category span of the thing that the span at `at` names a part of, through the
+        part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"): free, not the target and
+        of another kind (not "the left stool of the three stools"); else None."""
+        st, head = self.structure, self.words[self.cat_at[at].end - 1]
+        of = st.of_phrase(head) if head is not None else None
+        whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
+        if whole is None or whole in self.used or whole == self.target_at \
+                or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")):
+            return None
+        return whole
+
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
-        objects = self.cue_objects()  # with an apposition the parser hangs "one" on ("the metal [one]")
-        objects |= set(self.structure.children(objects, "appos"))
+        objects = self.cue_objects()  # with the apposition the parser hangs "one" on ("the metal [one]"), or
+        objects |= set(self.structure.children(objects, "appos"))  # the number ("next to blue [one]", not "one chair")
+        looks = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
+        objects |= set(self.structure.children({k for k in objects if k in looks or self.structure.words[k].pos != "NOUN"},
+                                               "nummod"))
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
@@ -330,10 +356,16 @@ class _Reader:
             if at is None:
                 return False
             self.used.add(at)
+            whole = self.whole_of(at)
+            if whole is not None:  # "on the top shelf of the bookcase": in the bookcase, which holds its shelves
+                self.parts.add(at)
+                at, rel.kind = whole, "in" if rel.kind == "on" else rel.kind
+                self.used.add(at)
             self.taken.setdefault(id(rel), []).append(at)
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
+        room = self.room_at.get(at)  # "the living room bookcase": the one in that room
         rel.landmarks.append(tuple(kind))
-        rel.landmark_attrs.append(self.attrs_before(at))
+        rel.landmark_attrs.append(self.attrs_before(at) + tuple(("room", r) for r in (room.values("room") if room else ())))
         self.last_landmark_end = end
         return True
 
@@ -342,8 +374,8 @@ class _Reader:
         i, negated = 0, set()  # indices of relations that follow a negation word
         toks, out = self.toks, self.out
         while i < len(self.lemmas):
-            if i and self.words[i - 1] is None and self.words[i] is not None:  # past "Not the green kettle:"
-                negated = {k for k in negated if k < len(out.relations)}
+            if i in self.sentence_starts or i and self.words[i - 1] is None and self.words[i] is not None:
+                negated = {k for k in negated if k < len(out.relations)}  # past "Not the green kettle:" or "Not that one."
             if toks[i] in _NEGATIONS:
                 negated.add(len(out.relations))
                 i += 1
@@ -609,7 +641,7 @@ class _Reader:
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
-            out.attrs = self.attrs_before(target)
+            out.attrs = self.attrs_before(self.stand_in_for(target))
             out.modifiers = self.compounds_before(target)
         elif info.afford:  # "the seat nearest the radio", "something to brighten the hallway": what serves
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
+SENTENCE_MARK = re.compile(r"[.!?]")
 #: (length a word must exceed, suffix) that `stem` cuts, the first that fits
 _SUFFIXES = ((5, "ing"), (4, "ed"), (4, "es"), (3, "s"))
 
@@ -102,8 +103,9 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
     return slots, used
 
 
-def clause_breaks(text: str, tokens: list[tuple[str, int]]) -> frozenset[int]:
+def clause_breaks(text: str, tokens: list[tuple[str, int]], marks: re.Pattern = _CLAUSE_MARK) -> frozenset[int]:
     """Indices of the `tokens` ((token, character offset in `text`) pairs) that punctuation separates
-    from the token before them: where a lexicon phrase may not continue ("the piano. The stool")."""
+    from the token before them: where a lexicon phrase may not continue ("the piano. The stool").
+    With `marks` `SENTENCE_MARK`: the tokens that open a new sentence."""
     return frozenset(k for k in range(1, len(tokens))
-                     if _CLAUSE_MARK.search(text, tokens[k - 1][1] + len(tokens[k - 1][0]), tokens[k][1]))
+                     if marks.search(text, tokens[k - 1][1] + len(tokens[k - 1][0]), tokens[k][1]))

@@ -136,7 +136,9 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     if landmark and not (fit >= 0.9).any():
         said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
         kind = said if said.any() else kind
-    attrs = tuple((k, v) for k, v in attrs if k != "size")  # sizes compare instances: see "extreme"
+    in_room = kind & np.array([r in {v for k, v in attrs if k == "room"} for r in scene.rooms], bool)
+    kind = in_room if in_room.any() else kind  # a landmark's room ("the kitchen table"), when one is there
+    attrs = tuple((k, v) for k, v in attrs if k not in ("size", "room"))  # sizes compare instances: see "extreme"
     if attrs and kind.any():
         fit = np.array([min(max((lex.attr_sim(k, v, vv) for kk, vv in a if kk == k), default=0.0) for k, v in attrs)
                         for a in scene.attrs])
@@ -242,7 +244,7 @@ def _view(scene: _Scene, targets: np.ndarray, view: _Viewpoint) -> tuple[np.ndar
 
 
 #: relations of contact, met or not by the geometry; a candidate that meets one scores at least _MET
-_CONTACT = ("on", "under", "above", "below", "with")
+_CONTACT = ("on", "in", "under", "above", "below", "with")
 _MET = 0.7
 
 
@@ -267,8 +269,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         return None  # the query's landmark could not be read: no guess
     if kind in _CONTACT:
         lm = marks[0]
-        if kind == "on":
+        if kind in ("on", "in"):  # "in": on one of its shelves, or on its top
             hit = geo.rests_on(tb, lm) | np.array([[int(i) in scene.on[t] for i in lm.ids] for t in targets])
+            hit |= geo.is_within(tb, lm) if kind == "in" else False
         elif kind == "under":
             hit = geo.is_under(tb, lm) | np.array([[int(i) in scene.under[t] for i in lm.ids] for t in targets])
         elif kind == "above":
@@ -277,7 +280,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             hit = geo.is_above(lm, tb).T
         else:  # "the nightstand with the clock (on it)": the landmark rests on the target, or is
             # part of it as its caption says ("the seat with a green cushion")
-            cats, attrs = rel.landmarks[0], set(rel.landmark_attrs[0])
+            cats, attrs = rel.landmarks[0], {(k, v) for k, v in rel.landmark_attrs[0] if k != "room"}
             own = np.array([bool(scene.parts[t] & set(cats)) and attrs <= scene.attrs[t] for t in targets], bool)
             hit = geo.rests_on(lm, tb).T | own[:, None]
         close = np.exp(-geo.center_distance(tb, lm))
