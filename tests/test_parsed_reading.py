@@ -137,6 +137,11 @@ def test_a_letter_left_out_wins_over_a_wrong_letter_in_place(typed, meant):
     assert load_lexicon().correct(typed) == meant  # not "basket", "cable": one wrong letter each too
 
 
+@pytest.mark.parametrize("typed, meant", [("platn", "plant"), ("ovne", "oven"), ("tary", "tray")])
+def test_a_swap_that_could_spell_two_words_reads_as_the_thing_a_request_names(typed, meant):
+    assert load_lexicon().correct(typed) == meant  # not "plan", "one", "try": slips as close that name no object
+
+
 @pytest.mark.parametrize("typed, meant", [("crpets", "carpets"), ("tolets", "toilets"), ("matres", "matres")])
 def test_a_misspelt_plural_noun_is_read_through_its_singular(typed, meant):
     assert load_lexicon().correct(typed) == meant  # "matre" is a finish, not a thing: left as typed

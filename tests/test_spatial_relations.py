@@ -472,6 +472,23 @@ def test_a_one_the_parser_hangs_as_a_number_is_still_the_landmark(text):
     assert [(r.kind, r.landmarks, r.landmark_attrs) for r in q.relations] == [("near", [("cup",)], [(("color", "blue"),)])]
 
 
+def test_a_pronoun_the_targets_relation_takes_is_the_thing_named_before(room):
+    # the box cannot be under itself: "it" is the desk of the sentence before
+    query = "There is a wooden desk in the bedroom. Take me to the box under it."
+    assert _relations(query) == [("under", [("desk",)], "")]
+    assert spatial(room, query)[0] == 7
+    # said of the target, "it" stays the target: the monitor is what sits on the chair's table
+    assert _relations("this is a chair. it is next to a table. there is a monitor on it.") == [
+        ("near", [("table",)], ""), ("with", [("monitor",)], "")]
+
+
+def test_what_the_speaker_wants_is_the_target_after_a_sentence_that_sets_the_scene():
+    vase = parse_query("There is a tall cabinet in the hall. I would like the vase standing on it.")
+    assert vase.target == ("vase",) and [(r.kind, r.landmarks) for r in vase.relations] == [("on", [("cabinet",)])]
+    chair = parse_query("This is a brown chair. I think it is near the door.")  # a description still comes first
+    assert chair.target == ("chair",)
+
+
 def test_one_as_a_count_of_a_noun_is_no_landmark():
     assert _relations("the desk with only one lamp on it") == [("with", [("lamp",)], "")]
 

@@ -152,6 +152,8 @@ class Lexicon:
         closest = [w for w, d in found if d == found[0][1]] if found else []
         typed = [w for w in closest if _slip(token, w)]  # a letter dropped, doubled or swapped before
         closest = typed or closest                       # one mistyped: "banket" a blanket, not a basket
+        named = [w for w in closest if any(kind in ("cat", "room") for kind, _ in self.phrases.get((w,), ()))]
+        closest = named or closest  # of those, a thing or a place a request names: "sikn" a sink, not skin
         # the closest is unique, or all closest are forms of one word ("lightt": light, lights)
         return min(closest, key=len) if closest and len({self.lemma(w) for w in closest}) == 1 else token
 

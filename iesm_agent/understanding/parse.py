@@ -52,7 +52,7 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,.!?\u2013\u2014]*?(?:[:;,\u2013\u2014]|[.!?](?=\s)| - )\s*",
                                 re.IGNORECASE)
 #: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
-_NAMING = ("dobj", "attr", "nsubj", "ROOT")
+NAMING = ("dobj", "attr", "nsubj", "ROOT")
 
 _lock = threading.Lock()
 _nlp = None
@@ -225,21 +225,26 @@ def _stand_in(doc, index: int | None) -> bool:
 
 def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     """The sentence that makes the request: the last command, question or bare noun phrase that
-    names a target; else the first description ("This is a brown chair."); else the last
-    statement about the speaker that names one ("I want to dust the frame"); never a sentence that
-    continues an earlier one ("It is next to the desk.")."""
-    for wanted, pick in (("request", -1), ("description", 0), ("personal", -1), ("viewpoint", 0)):
-        found = [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
-        if found:
-            return found[pick]
+    names a target; else the first description ("This is a brown chair."), unless it only sets the
+    scene ("There's a chest in the hall.") before a statement of what the speaker wants ("I want the
+    pot on it"); else the last statement about the speaker that names one ("I want to dust the
+    frame"); never a sentence that continues an earlier one ("It is next to the desk.")."""
+    found = {wanted: [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
+             for wanted in ("request", "description", "scene", "personal", "viewpoint")}
+    said = sorted(found["description"] + found["scene"])
+    if said and not found["request"] and (said[0] in found["description"] or not found["personal"]):
+        return said[0]
+    for wanted, pick in (("request", -1), ("personal", -1), ("viewpoint", 0)):
+        if found[wanted]:
+            return found[wanted][pick]
     return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
 
 
 def _sentence_target(doc, sent) -> tuple[str, int | None]:
     """(kind, target word index) of one sentence. Kinds: "request" (a command, a question, a bare
     noun phrase), "description" (a statement about an object: "this is a chair", "the chair is
-    by the desk"), "personal" (about the speaker), "continuation" (its subject stands for an
-    earlier target: "it is by the desk"), "empty" (no content word)."""
+    by the desk"), "scene" (what there is: "there is a rug"), "personal" (about the speaker),
+    "continuation" (its subject stands for an earlier target: "it is by the desk"), "empty" (no content word)."""
     if not any(t.pos_ in NOUNS + ("VERB", "ADJ", "PRON", "AUX", "NUM") for t in sent):
         return "empty", None
     root = sent.root
@@ -284,7 +289,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
         found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
                       and t.head.pos_ in NOUNS), None)
-    return ("request" if question else "description"), found
+    scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
+    return ("request" if question else "scene" if scene else "description"), found
 
 
 def _made(token) -> bool:
@@ -385,7 +391,7 @@ def _antecedent(doc, index: int) -> int:
     if named is not None:  # a partitive ("one of the benches"), or of a plural pronoun: what that stands for
         return _antecedent(doc, named) if doc[named].lower_ == "them" else named
     if doc[index].lower_ in ("it", "them"):  # the first noun named before it, as subject or object
-        named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in _NAMING]
+        named = [t.i for t in doc[:index] if t.pos_ in NOUNS and t.dep_ in NAMING]
         plural = [k for k in named if doc[k].tag_ in ("NNS", "NNPS")]  # "them": a plural noun when there is one
         return (plural if doc[index].lower_ == "them" and plural else named or [index])[0]
     if doc[index].lower_ not in ("one", "ones"):
@@ -398,7 +404,7 @@ def _antecedent(doc, index: int) -> int:
         return plural
     if any(doc[index].children):  # "the leather one": of a kind named some other way
         return index
-    return next((t.i for t in before if t.pos_ in NOUNS and t.dep_ in _NAMING), index)  # "I need a stool, find me one"
+    return next((t.i for t in before if t.pos_ in NOUNS and t.dep_ in NAMING), index)  # "I need a stool, find me one"
 
 
 def _partitive(token) -> int | None:

@@ -11,7 +11,7 @@ from functools import lru_cache
 from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
 from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
-from .parse import Word, normalise, parse_request
+from .parse import NAMING, Word, normalise, parse_request
 from .query import analyse_query
 from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
@@ -338,14 +338,31 @@ class _Reader:
             return None
         return whole
 
+    def antecedent(self, objects: set[int]) -> int | None:
+        """Start of the category span that a pronoun the cue takes stands for when the cue places the
+        target itself ("There's a bookcase in the hall. The vase on top of [it]"): the last one named
+        in an earlier sentence, not the target; else None."""
+        st = self.structure
+        said = [st.words[k].start for k in objects if st.words[k].text.lower() in BACK_REFERENCES]
+        top = self.cue_word
+        while top is not None and st.words[top].pos in ("ADP", "ADV") and st.words[top].head != top:
+            top = st.words[top].head  # the word the cue's phrase hangs on
+        if not said or top is None or st.target is None or not (  # the cue in the target's phrase, or on the
+                st.dominates(st.target, self.cue_word) or st.dominates(top, st.target)):  # verb that takes it
+            return None
+        opened = max((self.offsets[i] for i in self.sentence_starts if self.offsets[i] <= said[0]), default=-1)
+        before = [j for j in self.cat_at if self.offsets[j] < opened and j != self.target_at]
+        named = [j for j in before if self.word(self.cat_at[j].end - 1).dep in NAMING]  # not "the west wall" it is by
+        return max(named or before, default=None)
+
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
         objects = self.cue_objects()  # with the apposition the parser hangs "one" on ("the metal [one]"), or
         objects |= set(self.structure.children(objects, "appos"))  # the number ("next to blue [one]", not "one chair")
         looks = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
-        objects |= set(self.structure.children({k for k in objects if k in looks or self.structure.words[k].pos != "NOUN"},
-                                               "nummod"))
+        bare = {k for k in objects if k in looks or self.structure.words[k].pos != "NOUN"}
+        objects |= set(self.structure.children(bare, "nummod"))
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
@@ -353,6 +370,7 @@ class _Reader:
             at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
         else:
             at = self.next_cat(pos)
+            at = self.antecedent(objects) if at is None else at
             if at is None:
                 return False
             self.used.add(at)
@@ -365,7 +383,8 @@ class _Reader:
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
         room = self.room_at.get(at)  # "the living room bookcase": the one in that room
         rel.landmarks.append(tuple(kind))
-        rel.landmark_attrs.append(self.attrs_before(at) + tuple(("room", r) for r in (room.values("room") if room else ())))
+        rooms = tuple(("room", r) for r in (room.values("room") if room else ()))
+        rel.landmark_attrs.append(self.attrs_before(at) + rooms)
         self.last_landmark_end = end
         return True
 
@@ -375,7 +394,7 @@ class _Reader:
         toks, out = self.toks, self.out
         while i < len(self.lemmas):
             if i in self.sentence_starts or i and self.words[i - 1] is None and self.words[i] is not None:
-                negated = {k for k in negated if k < len(out.relations)}  # past "Not the green kettle:" or "Not that one."
+                negated = {k for k in negated if k < len(out.relations)}  # past "Not the kettle:", "Not that one."
             if toks[i] in _NEGATIONS:
                 negated.add(len(out.relations))
                 i += 1
