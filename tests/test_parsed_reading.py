@@ -242,3 +242,13 @@ def test_an_exclusion_rules_out_to_the_end_of_its_sentence():
     assert "pot" in pot.targets and ("color", "red") in pot.attrs and ("size", "large") in pot.excluded_attrs
 
 
+@pytest.mark.parametrize("text, kind", [("find me one of the lamps", "lamp"), ("Could you get us one of the towels?", "towel")])
+def test_a_thing_asked_for_someone_is_the_target_however_the_parser_hangs_it(text, kind):
+    assert analyse_query(text).targets.get(kind) == 1.0  # the parser reads "me one" as a clause
+
+
+def test_a_one_ends_the_target_phrase_before_what_describes_it():
+    # "the big one facing the window" asks for one of an unnamed kind; the window is what it faces
+    info = analyse_query("Take me to the big one facing the window.")
+    assert info.targets.get("window", 0.0) < 1.0 and "window" in info.landmarks
+

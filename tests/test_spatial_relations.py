@@ -489,6 +489,11 @@ def test_what_the_speaker_wants_is_the_target_after_a_sentence_that_sets_the_sce
     assert chair.target == ("chair",)
 
 
+@pytest.mark.parametrize("text", ["lamp closest bed", "lamp closest to bed", "the lamp closest to the bed"])
+def test_nearness_typed_without_articles_takes_its_noun(text):
+    assert parse_query(text).target == ("lamp",) and _relations(text) == [("closest", [("bed",)], "")]
+
+
 def test_one_as_a_count_of_a_noun_is_no_landmark():
     assert _relations("the desk with only one lamp on it") == [("with", [("lamp",)], "")]
 

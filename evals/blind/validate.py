@@ -48,6 +48,8 @@ def check(suite: Path, wordings: int) -> tuple[list[str], list[str], Counter, Co
             errors.append(f"line {n}: duplicate id {row['id']}")
         seen.add(row["id"])
         path = (suite.parent / row["map"]).resolve()
+        if not path.is_file() and "/" not in row["map"]:  # a shipped map's name ("apartment")
+            path = Path(__file__).resolve().parents[2] / "map_store" / f"{row['map']}.json"
         if row["map"] not in maps:
             if not path.is_file():
                 errors.append(f"line {n}: no map {path}")

@@ -46,7 +46,11 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
               # a word of nearness that takes its noun as a preposition does ("nearer the door"):
               # with its "to", which the tagger needs to read it as a word of place, not a noun
               (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",
-                          re.IGNORECASE), r"\1 to "))
+                          re.IGNORECASE), r"\1 to "),
+              # or, typed without articles, between two nouns ("stool closest window")
+              (re.compile(r"\b((?!(?:the|a|an|my|your|this|that|these|those|its|our|their)\b)[a-z]+ "
+                          r"(?:near|clos)e(?:r|st)) (?=(?!(?:to|from|of|one|ones|by)\b)[a-z]+\b)", re.IGNORECASE),
+               r"\1 to "))
 #: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its
 #: punctuation; a full stop ends it too ("Not the big pan. The small pot.": the next sentence asks)
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,.!?\u2013\u2014]*?(?:[:;,\u2013\u2014]|[.!?](?=\s)| - )\s*",
@@ -361,8 +365,9 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         found = _object_of(doc, child) if way else \
             child.i if child.lower_ in ("one", "ones") else _noun_of(child)
-        if found is not None and (way or child.dep_ in ("dobj", "attr", "oprd")):
-            return found
+        dative = child.dep_ == "ccomp" and any(g.dep_ == "nsubj" and g.lower_ in ("me", "us") for g in child.children)
+        if found is not None and (way or dative or child.dep_ in ("dobj", "attr", "oprd")):
+            return found  # ("find me one of the lamps", parsed with "me" as the subject of "one")
     for child in () if clauses_only else verb.children:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)

@@ -181,6 +181,9 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
     end = min([end, *clause])
+    one = reading.structure.target  # "the big one facing the window": the phrase ends at the "one"
+    if one is not None and reading.structure.words[one].text.lower() in ("one", "ones"):
+        end = next((i + 1 for i, t in enumerate(reading.surface) if t.at == reading.structure.words[one].start), end)
     head = _head_span(spans, end, lemmas, lex.words["abstract"])
     if head is None:
         return _Target(0, end, None, reading.structure.target)
