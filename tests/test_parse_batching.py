@@ -77,7 +77,9 @@ def test_the_batcher_parses_every_waiting_query_once(monkeypatch):
     assert batches[-1] == ["the bed"]
 
 
-def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_turns():
+def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_turns(monkeypatch):
+    batches: list[list[str]] = []
+    monkeypatch.setattr(batching, "parse_queries", batches.append)
     batcher = ParseBatcher()
 
     async def arrive_later(queries: list[str]) -> None:
@@ -111,8 +113,9 @@ def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_t
         return turns
 
     assert asyncio.run(alone()) <= batching.SETTLE_TURNS + 1
-    batcher.parse("the sofa")  # (parsed: settling a parsed query returns at once)
-    asyncio.run(batcher.settle("the sofa"))
+    batcher.parse("the sofa")
+    assert batches == [["the sofa", "a lamp", "the sink", "the bed", "the desk"]]
+    asyncio.run(batcher.settle("the sofa"))  # parsed: settling returns at once
 
 
 def test_concurrent_first_time_queries_are_parsed_together_and_answered_as_alone(apartment_store, monkeypatch):
