@@ -117,6 +117,24 @@ def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_t
     assert batches == [["the sofa", "a lamp", "the sink", "the bed", "the desk"]]
     asyncio.run(batcher.settle("the sofa"))  # parsed: settling returns at once
 
+    async def endless() -> int:  # a query arriving at every turn: the settling query still goes on
+        turns = 0
+
+        async def stream() -> None:
+            nonlocal turns
+            while True:
+                await asyncio.sleep(0)
+                turns += 1
+                batcher.arrived(f"query {turns}")
+
+        streaming = asyncio.ensure_future(stream())
+        batcher.arrived("the chair")
+        await batcher.settle("the chair")
+        streaming.cancel()
+        return turns
+
+    assert asyncio.run(endless()) <= batching.SETTLE_MAX_TURNS + 1
+
 
 def test_concurrent_first_time_queries_are_parsed_together_and_answered_as_alone(apartment_store, monkeypatch):
     monkeypatch.setenv("IESM_EMBEDDINGS", "0")

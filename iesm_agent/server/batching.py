@@ -19,8 +19,9 @@ from ..understanding import parse_queries
 
 #: queries remembered as parsed (`analyse_query` memoises as many)
 SEEN_MAX = 4096
-#: event-loop turns in a row without a new query before the waiting queries are parsed
-SETTLE_TURNS = 4
+#: event-loop turns in a row without a new query before the waiting queries are parsed, and the
+#: most turns a query waits however many keep arriving (a burst of 40 over HTTP settled in 4-11)
+SETTLE_TURNS, SETTLE_MAX_TURNS = 4, 64
 
 
 class ParseBatcher:
@@ -39,9 +40,12 @@ class ParseBatcher:
 
     async def settle(self, query: str) -> None:
         """While `query` waits for its parse, yield to the event loop until `SETTLE_TURNS` turns in a
-        row bring no new query, so that the requests already received join its batch."""
+        row bring no new query (at most `SETTLE_MAX_TURNS` turns), so that the requests already
+        received join its batch."""
         quiet = 0
-        while quiet < SETTLE_TURNS and query in self._waiting:
+        for _ in range(SETTLE_MAX_TURNS):
+            if quiet >= SETTLE_TURNS or query not in self._waiting:
+                return
             arrivals = self._arrivals
             await asyncio.sleep(0)
             quiet = quiet + 1 if self._arrivals == arrivals else 0
