@@ -77,6 +77,65 @@ def test_the_batcher_parses_every_waiting_query_once(monkeypatch):
     assert batches[-1] == ["the bed"]
 
 
+def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_turns(monkeypatch):
+    batches: list[list[str]] = []
+    monkeypatch.setattr(batching, "parse_queries", batches.append)
+    batcher = ParseBatcher()
+
+    async def arrive_later(queries: list[str]) -> None:
+        for q in queries:  # one arrival per turn of the loop, as requests reaching find_goal
+            await asyncio.sleep(0)
+            batcher.arrived(q)
+
+    async def burst() -> list[str]:
+        batcher.arrived("the sofa")
+        later = asyncio.ensure_future(arrive_later(["a lamp", "the sink", "the bed"]))
+        await batcher.settle("the sofa")
+        waiting = list(batcher._waiting)
+        await later
+        return waiting
+
+    assert asyncio.run(burst()) == ["the sofa", "a lamp", "the sink", "the bed"]
+
+    async def alone() -> int:
+        turns = 0
+
+        async def count() -> None:
+            nonlocal turns
+            while True:
+                await asyncio.sleep(0)
+                turns += 1
+
+        counter = asyncio.ensure_future(count())
+        batcher.arrived("the desk")
+        await batcher.settle("the desk")
+        counter.cancel()
+        return turns
+
+    assert asyncio.run(alone()) <= batching.SETTLE_TURNS + 1
+    batcher.parse("the sofa")
+    assert batches == [["the sofa", "a lamp", "the sink", "the bed", "the desk"]]
+    asyncio.run(batcher.settle("the sofa"))  # parsed: settling returns at once
+
+    async def endless() -> int:  # a query arriving at every turn: the settling query still goes on
+        turns = 0
+
+        async def stream() -> None:
+            nonlocal turns
+            while True:
+                await asyncio.sleep(0)
+                turns += 1
+                batcher.arrived(f"query {turns}")
+
+        streaming = asyncio.ensure_future(stream())
+        batcher.arrived("the chair")
+        await batcher.settle("the chair")
+        streaming.cancel()
+        return turns
+
+    assert asyncio.run(endless()) <= batching.SETTLE_MAX_TURNS + 1
+
+
 def test_concurrent_first_time_queries_are_parsed_together_and_answered_as_alone(apartment_store, monkeypatch):
     monkeypatch.setenv("IESM_EMBEDDINGS", "0")
     queries = _suite_texts("apartment_human_suite.jsonl", 10)

@@ -63,6 +63,7 @@ class Lexicon:
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _correction_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _targets: frozenset[str] | None = field(default=None, repr=False)
+    _purpose_cache: dict[tuple[str, float], tuple[int, ...]] = field(default_factory=dict, repr=False)
 
     # -- tokens -----------------------------------------------------------------------------
     def lemma(self, token: str) -> str:
@@ -245,6 +246,15 @@ class Lexicon:
         if up_label & up_query:
             return 0.35
         return 0.0
+
+    def purposes_of(self, kind: str, least: float) -> tuple[int, ...]:
+        """Indices, in order, of the affordance entries that weigh `kind` at least `least` (memoised
+        per kind: the lexicon's entries are fixed, a query reads a few kinds)."""
+        hit = self._purpose_cache.get((kind, least))
+        if hit is None:
+            hit = tuple(i for i, entry in enumerate(self.affordances) if entry.get(kind, 0.0) >= least)
+            self._purpose_cache[(kind, least)] = hit
+        return hit
 
     def room_sim(self, a: str, b: str) -> float:
         if a == b:

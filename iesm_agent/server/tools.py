@@ -183,6 +183,7 @@ class MapService:
         self._parses.arrived(query)
         if isinstance(retriever.model, OffLoopModel):
             async with self._admission():  # first come, first served on the worker pool
+                await self._parses.settle(query)  # the queries arriving with it join its batch
                 self._parses.parse(query)  # with the queries waiting behind it
                 new_query()  # this query's model calls go to the pool as one job
                 res = await retriever.aask(query)

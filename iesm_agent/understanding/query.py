@@ -417,8 +417,8 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
     """Kinds that serve the same purpose as a named category (chair -> sofa, stool, bench): the
     most typical kinds of the affordance entries whose first kinds include it, 0.8 x their weight."""
     kin: dict[str, float] = {}
-    for concept, weight in ((c, w) for entry in lex.affordances if any(entry.get(n, 0.0) >= _OWN_PURPOSE for n in named)
-                            for c, w in entry.items() if w >= _TYPICAL):
+    for concept, weight in ((c, w) for i in sorted({i for n in named for i in lex.purposes_of(n, _OWN_PURPOSE)})
+                            for c, w in lex.affordances[i].items() if w >= _TYPICAL):
         kin[concept] = max(kin.get(concept, 0.0), _KIN_SCALE * weight)
     return kin
 

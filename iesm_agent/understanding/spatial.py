@@ -416,8 +416,8 @@ class _Reader:
     def cue(self, i: int) -> int:
         """Read the relation cue at `i` (if any); the position after it."""
         toks = self.toks
-        cue = next(((c, k) for c, k in sorted(_CUES.items(), key=lambda kv: -len(kv[0]))
-                    if tuple(toks[i:i + len(c)]) == c), None)
+        cue = max(((c, k) for c, k in _CUES.items() if c[0] == toks[i] and tuple(toks[i:i + len(c)]) == c),
+                  key=lambda ck: len(ck[0]), default=None)  # the longest cue here (the first of equals)
         if cue is None:
             return i + 1
         words, kind = cue
