@@ -80,10 +80,10 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
 @dataclass
 class Relation:
     """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark,
-    "on the top shelf of the bookcase"), landmark categories
-    (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
-    high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the target's
-    kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
+    "on the top shelf of the bookcase"), landmark categories (one tuple of canonical categories per
+    landmark), `value` (extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark";
+    middle: "group" for the middle one of the target's kind, else the room's middle or a landmark's),
+    `order` (1-based, -1 = last)."""
 
     kind: str
     landmarks: list[tuple[str, ...]] = field(default_factory=list)
@@ -126,7 +126,6 @@ def _side_words(kept: list[tuple[str, int]], text: str) -> list[tuple[str, int]]
     return out
 
 
-# -- reading the query -----------------------------------------------------------------------
 class _Reader:
     """One pass over a query's tokens: cues become relations, the category phrases after them
     their landmarks (`used` holds the starts of the category spans taken as landmarks)."""
@@ -163,7 +162,12 @@ class _Reader:
         #: parsed word -> start of the category span holding its first token (`.get`: None when none holds it)
         self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
                         for i, word in reversed(list(enumerate(self.words))) if word is not None}
-        self.target_at = self.parsed_target()
+        #: start of the category span of the target noun the parse names, else of the first span naming what
+        #: the shared reading found as the target (None: neither)
+        self.target_at = self.span_of.get(self.structure.target)
+        if self.target_at is None:
+            named = {c for c, w in analyse_query(text).targets.items() if w >= 1.0}
+            self.target_at = next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
         self.used: set[int] = set() if self.target_at is None else {self.target_at}
         self.parts: set[int] = set()  # starts of the landmark spans that name a part of another landmark
 
@@ -171,15 +175,6 @@ class _Reader:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
         k = self.words[i]
         return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
-
-    def parsed_target(self) -> int | None:
-        """Start of the category span of the target noun the parse names; else of the first span
-        naming what the shared reading found as the target; else None."""
-        found = self.span_of.get(self.structure.target)
-        if found is not None:
-            return found
-        named = {c for c, w in analyse_query(self.text).targets.items() if w >= 1.0}
-        return next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
 
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun
@@ -331,7 +326,7 @@ class _Reader:
         part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"): free, not the target and
         of another kind (not "the left stool of the three stools"); else None."""
         st, head = self.structure, self.words[self.cat_at[at].end - 1]
-        of = st.of_phrase(head) if head is not None else None
+        of = st.of_phrase(head)
         whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
         if whole is None or whole in self.used or whole == self.target_at \
                 or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")):
