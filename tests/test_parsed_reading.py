@@ -252,3 +252,10 @@ def test_a_one_ends_the_target_phrase_before_what_describes_it():
     info = analyse_query("Take me to the big one facing the window.")
     assert info.targets.get("window", 0.0) < 1.0 and "window" in info.landmarks
 
+
+
+@pytest.mark.parametrize("text", ["@@@", "\U0001F600", "\u00a7", "\u03a9", "?!"])
+def test_a_request_without_words_reads_as_empty_not_as_an_error(text):
+    from iesm_agent.understanding.spatial import parse_query
+    info = analyse_query(text)
+    assert not info.targets and not parse_query(text).relations

@@ -599,3 +599,12 @@ def test_the_targets_appearance_counts_wherever_the_request_gives_it(room, query
     # the red chair 10 is nearest the door; the appearance said in another sentence or before a
     # participle still narrows the targets to the blue chair 11
     assert spatial(room, query)[0] == 11
+
+
+def test_relations_are_told_apart_by_identity_not_by_address():
+    # the reader files each relation's landmarks under the relation itself; filed under id(), a relation
+    # read and dropped could leave its landmarks to a later one given the same address (readings that
+    # changed from run to run)
+    from iesm_agent.understanding.spatial import Relation
+    a, b = Relation("near"), Relation("near")
+    assert len({a, b}) == 2 and {a: 1}.get(b) is None

@@ -78,14 +78,10 @@ def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> str | None:
     best is below MIN_SIMILARITY or within MIN_MARGIN of the runner-up."""
     if encoder is None or not options:
         return None
-    sims = _encode(encoder, options) @ _encode(encoder, [phrase])[0]
+    known, asked = (np.asarray(encoder.encode(list(texts)), np.float32) for texts in (options, [phrase]))
+    sims = known @ asked[0]  # cosines: the encoder's vectors are of unit length (and memoised)
     order = np.argsort(-sims)
     best = float(sims[order[0]])
     runner_up = float(sims[order[1]]) if len(order) > 1 else -1.0
     clear = best >= MIN_SIMILARITY and best - runner_up >= MIN_MARGIN
     return options[int(order[0])] if clear else None
-
-
-def _encode(encoder: Any, texts: Sequence[str]) -> np.ndarray:
-    """(N, D) unit vectors of `texts` (the encoder memoises them)."""
-    return np.asarray(encoder.encode(list(texts)), np.float32)

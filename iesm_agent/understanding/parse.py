@@ -203,7 +203,11 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
     phrase = _noun_phrase(doc, target) if target is not None else None
-    return Structure(words, target, phrase, request, context, _left_place(doc, request, at), text=text)
+    # what the request wants out of: the object of "leave"/"exit" or the noun after "out of" ("out of this garage")
+    leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
+        t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
+        or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
+    return Structure(words, target, phrase, request, context, leaving, text=text)
 
 
 def _wished_portion(token) -> bool:
@@ -212,14 +216,6 @@ def _wished_portion(token) -> bool:
     return token.lemma_ in _PORTIONS and _partitive(token) is not None and (  # every word of a parse: vessels first
         token.dep_ == "pobj" and token.head.lower_ == "for" or token.dep_ == "dobj" and (
             _made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL for c in token.head.children)))
-
-
-def _left_place(doc, request: tuple[int, int], at: int) -> int | None:
-    """The noun the request (a character range; `doc` starts at `at`) wants out of: the object of
-    "leave"/"exit" or the noun after "out of" ("lead us out of this garage"); else None."""
-    return next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
-        t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
-        or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
 
 
 def _stand_in(doc, index: int | None) -> bool:
@@ -267,13 +263,21 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return ("request", shown) if shown is not None else ("viewpoint", found)
     if command is not None and command[1] is not None:  # "it's chilly, so lead me to a quilt"
         return "request", command[1]
-    named = _copula_attribute(root)  # "this is a kettle", "it's on the shelf and is the jar ..."
+    # the noun the copula, or one joined to it, names ("this is a kettle", "it's on the shelf and is the jar";
+    # "this is the one without a lid": the stand-in, for its antecedent)
+    named = next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
+                  for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))),
+                 None)
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and named is None:
         return "continuation", None
     if command is not None:
         return "request", None
     if root.pos_ not in ("VERB", "AUX") and subject is None:
-        return "request", _telegraphic_target(root)  # a bare noun phrase: "the kettle on the left", "somewhere to perch"
+        # a bare noun phrase's head ("the kettle on the left", "somewhere to perch"); in a telegraphic one whose
+        # superlative the parser took for a modifier ("stool nearest fridge"), the noun before the superlative
+        lefts = list(root.lefts)
+        return "request", next((lefts[k - 1].i for k in range(1, len(lefts))
+                                if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and (subject.lower_ in _PERSONAL or any(  # "my ankles are sore": about the speaker
             c.dep_ == "poss" and c.lower_ in _PERSONAL for c in subject.children)):
@@ -315,21 +319,6 @@ def _noun_of(token) -> int | None:
         return named if named is not None and token.doc[named].pos_ in NOUNS else None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
                  and c.pos_ in NOUNS and c.i == token.i - 1), None)
-
-
-def _telegraphic_target(root) -> int:
-    """The head of a bare noun phrase, or in a telegraphic one whose superlative the parser took
-    for a modifier ("stool nearest fridge"), the noun before the superlative."""
-    lefts = list(root.lefts)
-    return next((lefts[k - 1].i for k in range(1, len(lefts))
-                 if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
-
-
-def _copula_attribute(root) -> int | None:
-    """The noun the copula `root`, or one joined to it, names ("this is a kettle", "it's on the shelf
-    and is the jar"; "this is the one without a lid": the stand-in, for its antecedent), or None."""
-    return next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
-                 for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))), None)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:

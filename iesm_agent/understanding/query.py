@@ -94,30 +94,9 @@ def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
                  if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd)), 0)
 
 
-def _strip_command(lex: Lexicon, tokens: list[str]) -> list[str]:
-    """`tokens` without the request phrases they open with ("do show me the way to")."""
-    while n := _command_at(lex, tokens, 0):
-        tokens = tokens[n:]
-    return tokens
-
-
 def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float) -> None:
     for concept, w in weights.items():
         target[concept] = target.get(concept, 0.0) + w * scale
-
-
-def _split_preamble(lex: Lexicon, tokens: list[str]) -> tuple[list[str], list[str]]:
-    """(request, preamble): when a request phrase ("go to", "take me to", "find") starts after at
-    least two words, what comes before it only says why ("My feet are cold, take me to a rug")."""
-    start = next((i for i in range(2, len(tokens) - 1) if tokens[i] in MOTION_VERBS | _REQUEST_OPENERS
-                  and tokens[i - 1] != "to" and _command_at(lex, tokens, i)), None)  # not "to get it dried"
-    return (tokens, []) if start is None else (tokens[start:], tokens[:start])
-
-
-def _exclusion_at(tokens: list[str]) -> tuple[int, int] | None:
-    """(start, end) of the first exclusion marker after the first word, or None."""
-    return next(((i, i + len(marker)) for i in range(1, len(tokens)) for marker in _EXCLUSIONS
-                 if tuple(tokens[i:i + len(marker)]) == marker), None)
 
 
 class _Token(str):
@@ -174,9 +153,10 @@ def _adjacent(surface: list[_Token], i: int) -> bool:
 def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
     """The target phrase read from the word order when the parse names no known category: it
     ends at the first boundary word (a relative clause, landmark or room) or where a clause
-    about a landmark begins (`clause`); its head is the rightmost category before that, its `word`
-    the parse's word for that head, else the parse's target ("the thing", "something")."""
-    bounds = lex.words["boundaries"]
+    about a landmark begins (`clause`); its head is the rightmost specific category before that (not an
+    attribute word before an abstract noun: "the glass object" is no drinking glass), its `word` the
+    parse's word for that head, else the parse's target ("the thing", "something")."""
+    bounds, abstract = lex.words["boundaries"], lex.words["abstract"]
     lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
     end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
@@ -184,7 +164,9 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
     one = reading.structure.target  # "the big one facing the window": the phrase ends at the "one"
     if one is not None and reading.structure.words[one].text.lower() in ("one", "ones"):
         end = next((i + 1 for i, t in enumerate(reading.surface) if t.at == reading.structure.words[one].start), end)
-    head = _head_span(spans, end, lemmas, lex.words["abstract"])
+    head = next((s for s in reversed(spans) if s.end <= end and set(s.values("cat")) - _UNSPECIFIC and not s.has("gen")
+                 and not (set(lemmas[s.end:s.end + 1]) & abstract and any(k in ATTRIBUTE_KINDS for k, _ in s.kinds))),
+                None)
     if head is None:
         return _Target(0, end, None, reading.structure.target)
     return _Target(0, end, head, reading.structure.index_at(reading.surface[head.end - 1].at))
@@ -234,7 +216,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     corrected = structure.text  # without the vessels of a wished portion ("a jug of juice": a juice)
     start, end = structure.request
     tokens = [_Token(token, start + at) for token, at in lex.token_offsets(corrected[start:end])]
-    marker = _exclusion_at(tokens)
+    marker = next(((i, i + len(words)) for i in range(1, len(tokens)) for words in _EXCLUSIONS
+                   if tuple(tokens[i:i + len(words)]) == words), None)  # the first exclusion after the first word
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the shelf.")
@@ -242,13 +225,19 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
                   default=len(tokens))
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:end])))
         tokens = tokens[:marker[0]] + tokens[end:]
-    request, preamble = _split_preamble(lex, tokens)
-    if structure.target is None or structure.words[structure.target].start >= request[0].at:
-        tokens = request  # what comes before the request phrase only says why
+    # a request phrase ("go to", "take me to", "find") after at least two words: what comes before it only says why
+    start = next((i for i in range(2, len(tokens) - 1) if tokens[i] in MOTION_VERBS | _REQUEST_OPENERS
+                  and tokens[i - 1] != "to" and _command_at(lex, tokens, i)), None)  # not "to get it dried"
+    request, preamble = (tokens, []) if start is None else (tokens[start:], tokens[:start])
+    if structure.target is None or not request or structure.words[structure.target].start >= request[0].at:
+        tokens = request  # "My feet are cold, take me to a rug"
     else:
         preamble = []  # the parse's target comes first ("A round rug by the door. Head there.")
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
-    surface = [t for t in _strip_command(lex, strip_motion(tokens)) if t not in lex.words["skip"]]
+    tokens = strip_motion(tokens)
+    while n := _command_at(lex, tokens, 0):  # without the request phrases it opens with ("do show me the way to")
+        tokens = tokens[n:]
+    surface = [t for t in tokens if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
     return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
@@ -266,7 +255,8 @@ def analyse_query(text: str) -> QueryInfo:
     after an exclusion marker ("- not the metal one") only say what the target is not."""
     lex = load_lexicon()
     reading = _read_request(lex, text)
-    info = _draft(text)
+    info = SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
+                              for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
     info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
@@ -294,7 +284,9 @@ def analyse_query(text: str) -> QueryInfo:
             info.room_phrase = context.room_phrase
     top = max(afford.values(), default=1.0)
     info.afford = {c: w / top for c, w in afford.items()}
-    if not _named(info) and _leaves_a_room(reading):
+    left = reading.structure.leaving  # what the request wants out of, when it is a room ("get me out of the garage")
+    left = None if left is None else _surface_index(reading.surface, reading.structure.words[left])
+    if not _named(info) and left is not None and any(s.has("room") and s.start <= left < s.end for s in reading.spans):
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
@@ -311,12 +303,6 @@ def analyse_query(text: str) -> QueryInfo:
     return QueryInfo(**vars(info))
 
 
-def _draft(text: str) -> SimpleNamespace:
-    """A mutable draft of a `QueryInfo` with its defaults, filled while the request is read."""
-    return SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
-                              for f in fields(QueryInfo) if f.name != "text"}, text=text)
-
-
 def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     """True when surface token `index` is a noun the parse puts under the target noun, not the head
     itself ("the grey file with a tag on the spine"): a use it hints at describes the thing rather than
@@ -325,13 +311,6 @@ def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
     word = structure.index_at(reading.surface[index].at)
     return (word is not None and target.word is not None and word != target.word
             and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
-
-
-def _leaves_a_room(reading: _Reading) -> bool:
-    """True when what the request wants out of is a room ("get me out of the garage")."""
-    left = reading.structure.leaving
-    index = None if left is None else _surface_index(reading.surface, reading.structure.words[left])
-    return index is not None and any(s.has("room") and s.start <= index < s.end for s in reading.spans)
 
 
 def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
@@ -440,11 +419,3 @@ def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals
     starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
               if token in STRANDABLE and is_stranded(surface, k + 1, finals)}
     return {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}
-
-
-def _head_span(spans: list[Span], end: int, lemmas: list[str], abstract: frozenset[str]) -> Span | None:
-    """Rightmost specific category span inside the target phrase; not an attribute word before an
-    abstract noun ("the glass object": glass is the material, not a drinking glass)."""
-    heads = [s for s in spans if s.end <= end and set(s.values("cat")) - _UNSPECIFIC and not s.has("gen")
-             and not (set(lemmas[s.end:s.end + 1]) & abstract and any(k in ATTRIBUTE_KINDS for k, _ in s.kinds))]
-    return heads[-1] if heads else None

@@ -77,13 +77,13 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
               "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
 
 
-@dataclass
+@dataclass(eq=False)  # one statement of one request, told apart by identity (`_Reader.taken`)
 class Relation:
     """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark,
-    "on the top shelf of the bookcase"), landmark categories
-    (one tuple of canonical categories per landmark), `value` (extreme: large/small/tall/short/
-    high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the target's
-    kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
+    "on the top shelf of the bookcase"), landmark categories (one tuple of canonical categories per
+    landmark), `value` (extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark";
+    middle: "group" for the middle one of the target's kind, else the room's middle or a landmark's),
+    `order` (1-based, -1 = last)."""
 
     kind: str
     landmarks: list[tuple[str, ...]] = field(default_factory=list)
@@ -126,7 +126,6 @@ def _side_words(kept: list[tuple[str, int]], text: str) -> list[tuple[str, int]]
     return out
 
 
-# -- reading the query -----------------------------------------------------------------------
 class _Reader:
     """One pass over a query's tokens: cues become relations, the category phrases after them
     their landmarks (`used` holds the starts of the category spans taken as landmarks)."""
@@ -151,19 +150,25 @@ class _Reader:
                 # or a participle ("the plant standing by the tv"), not the noun of its lemma
                 or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
-        self.room_at = {s.end: s for s in spans if s.has("room") and not s.has("cat")}
+        self.room_at = {s.end: tuple(("room", r) for r in s.values("room")) for s in spans
+                        if s.has("room") and not s.has("cat")}
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
         self.out = SpatialQuery()
         self.last_landmark_end = -1
-        self.taken: dict[int, list[int]] = {}  # id(relation) -> starts of its landmark spans
+        self.taken: dict[Relation, list[int]] = {}  # relation -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
         #: parsed word -> start of the category span holding its first token (`.get`: None when none holds it)
         self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
                         for i, word in reversed(list(enumerate(self.words))) if word is not None}
-        self.target_at = self.parsed_target()
+        #: start of the category span of the target noun the parse names, else of the first span naming what
+        #: the shared reading found as the target (None: neither)
+        self.target_at = self.span_of.get(self.structure.target)
+        if self.target_at is None:
+            named = {c for c, w in analyse_query(text).targets.items() if w >= 1.0}
+            self.target_at = next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
         self.used: set[int] = set() if self.target_at is None else {self.target_at}
         self.parts: set[int] = set()  # starts of the landmark spans that name a part of another landmark
 
@@ -171,15 +176,6 @@ class _Reader:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
         k = self.words[i]
         return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
-
-    def parsed_target(self) -> int | None:
-        """Start of the category span of the target noun the parse names; else of the first span
-        naming what the shared reading found as the target; else None."""
-        found = self.span_of.get(self.structure.target)
-        if found is not None:
-            return found
-        named = {c for c, w in analyse_query(self.text).targets.items() if w >= 1.0}
-        return next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
 
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun
@@ -249,12 +245,6 @@ class _Reader:
             found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS] if s else []
             end = s.start if s else end - 1
         return tuple(found)
-
-    def stand_in_for(self, target: int) -> int:
-        """Where the target's own attributes are read: at the "one" the parse takes as the target when
-        the kind was named only in a leading exclusion ("Not the red mug, the blue one"); else `target`."""
-        one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
-        return one if self.words[target] is None and one is not None and self.toks[one] == "one" else target
 
     def compounds_before(self, start: int) -> frozenset[str]:
         """Lemmas of the nouns that modify the noun at `start` from its left ("the bar seat": bar)."""
@@ -331,7 +321,7 @@ class _Reader:
         part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"): free, not the target and
         of another kind (not "the left stool of the three stools"); else None."""
         st, head = self.structure, self.words[self.cat_at[at].end - 1]
-        of = st.of_phrase(head) if head is not None else None
+        of = st.of_phrase(head)
         whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
         if whole is None or whole in self.used or whole == self.target_at \
                 or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")):
@@ -379,12 +369,10 @@ class _Reader:
                 self.parts.add(at)
                 at, rel.kind = whole, "in" if rel.kind == "on" else rel.kind
                 self.used.add(at)
-            self.taken.setdefault(id(rel), []).append(at)
+            self.taken.setdefault(rel, []).append(at)
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
-        room = self.room_at.get(at)  # "the living room bookcase": the one in that room
-        rel.landmarks.append(tuple(kind))
-        rooms = tuple(("room", r) for r in (room.values("room") if room else ()))
-        rel.landmark_attrs.append(self.attrs_before(at) + rooms)
+        rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
+        rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end
         return True
 
@@ -441,7 +429,7 @@ class _Reader:
         """A relative clause's stranded preposition ("the cabinet the printer sits on"): its noun is
         the landmark, the relation seen from the target; False when the clause has no such noun."""
         j = clause_landmark(self.cat_at, self.toks, i)
-        owner = next((r for r in self.out.relations if j in self.taken.get(id(r), ())), None)
+        owner = next((r for r in self.out.relations if j in self.taken.get(r, ())), None)
         if j is None or (j in self.used and (owner is None or owner.kind != "with")):
             return False
         if owner is not None:  # "with a lamp next to it": one fact, the clause says which way
@@ -556,7 +544,7 @@ class _Reader:
         owner = self.span_of.get(noun)
         if owner is None or owner == self.target_at or self.target_at is None or self.points_back(noun):
             return False  # on the target's own noun or its kind named again ("facing the vases, the left vase")
-        described = next((r for r in self.out.relations if owner in self.taken.get(id(r), ())), None)
+        described = next((r for r in self.out.relations if owner in self.taken.get(r, ())), None)
         if described is not None and not described.landmark_where:
             described.landmark_where = kind
         return True
@@ -567,7 +555,7 @@ class _Reader:
         objects = self.cue_objects()
         if not self.landmark(rel, pos) or self.out.facing:
             return
-        j = self.taken[id(rel)][-1]
+        j = self.taken[rel][-1]
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
         if not objects & set(self._span_words(j)) and not part:
             return  # "standing at the centre of the hall, ...": no object the cue takes
@@ -649,18 +637,20 @@ class _Reader:
         if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
             # a relation needs a target and a distinct landmark: when the only thing named was read as
             # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
-            first = next((r for r in out.relations if taken.get(id(r))), None)
+            first = next((r for r in out.relations if taken.get(r)), None)
             if first is not None:
-                target = taken[id(first)][0]
+                target = taken[first][0]
                 out.relations = [r for r in out.relations if r is not first]
-                if not any(taken.get(id(r)) for r in out.relations):
+                if not any(taken.get(r) for r in out.relations):
                     out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
         # a relation to a landmark the request does not name ("the nearest sofa") says nothing
         out.relations = [r for r in out.relations if r.landmarks or r.kind not in _NEEDS_LANDMARK]
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
-            out.attrs = self.attrs_before(self.stand_in_for(target))
+            one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
+            stand_in = self.words[target] is None and one is not None and self.toks[one] == "one"
+            out.attrs = self.attrs_before(one if stand_in else target)  # "Not the red mug, the blue one": blue
             out.modifiers = self.compounds_before(target)
         elif info.afford:  # "the seat nearest the radio", "something to brighten the hallway": what serves
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
