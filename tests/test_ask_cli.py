@@ -72,3 +72,11 @@ def test_an_empty_query_is_refused_in_one_line(capsys):
     assert run(["ask", "apartment", "   "]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["iesm: error: query: the query is empty"]
+
+
+def test_a_query_without_a_word_is_refused_in_one_line(capsys):
+    from iesm_agent.cli import run
+
+    assert run(["ask", "apartment", "\U0001F600 ?!"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["iesm: error: query: the query has no word (no letter or digit)"]

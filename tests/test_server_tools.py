@@ -95,6 +95,7 @@ def test_find_goal_matches_the_retriever(service, apartment_store):
     ({"query": "chair", "map": "castle"}, "unknown map 'castle'; served: apartment"),
     ({"query": "x" * 100_000}, f"100000 characters; at most {MAX_QUERY_CHARS}"),
     ({"query": "   "}, "the query is empty"),
+    ({"query": "?! @@@"}, "the query has no word"),
     ({"query": "chair", "provider": "openai:gpt-4o"}, "not enabled on this server"),
     ({"query": "chair", "method": "vote"}, "unknown retrieval method"),
 ])

@@ -34,10 +34,12 @@ MAX_QUERY_CHARS = 2000
 
 
 def check_query(query: str) -> str:
-    """`query` when it is a usable request; an empty or over-long one is an `IesmError` naming
+    """`query` when it is a usable request; an empty, wordless or over-long one is an `IesmError` naming
     the argument (the CLI and the server refuse it before any model call)."""
     if not query.strip():
         raise IesmError("the query is empty", None, "query")
+    if not any(c.isalnum() for c in query):  # "@@@", an emoji: nothing to read
+        raise IesmError("the query has no word (no letter or digit)", None, "query")
     if len(query) > MAX_QUERY_CHARS:
         raise IesmError(f"the query has {len(query)} characters; at most {MAX_QUERY_CHARS} are accepted",
                         None, "query")
