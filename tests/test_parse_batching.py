@@ -77,6 +77,26 @@ def test_the_batcher_parses_every_waiting_query_once(monkeypatch):
     assert batches[-1] == ["the bed"]
 
 
+async def _settling_turns(batcher: ParseBatcher, query: str, arriving: bool) -> int:
+    """Turns of the event loop another task saw while `query` settled; with `arriving`, that task
+    registers a new query at every turn."""
+    turns = 0
+
+    async def tick() -> None:
+        nonlocal turns
+        while True:
+            await asyncio.sleep(0)
+            turns += 1
+            if arriving:
+                batcher.arrived(f"query {turns}")
+
+    ticking = asyncio.ensure_future(tick())
+    batcher.arrived(query)
+    await batcher.settle(query)
+    ticking.cancel()
+    return turns
+
+
 def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_turns(monkeypatch):
     batches: list[list[str]] = []
     monkeypatch.setattr(batching, "parse_queries", batches.append)
@@ -97,43 +117,13 @@ def test_settling_lets_arriving_queries_join_and_a_lone_query_waits_only_a_few_t
 
     assert asyncio.run(burst()) == ["the sofa", "a lamp", "the sink", "the bed"]
 
-    async def alone() -> int:
-        turns = 0
-
-        async def count() -> None:
-            nonlocal turns
-            while True:
-                await asyncio.sleep(0)
-                turns += 1
-
-        counter = asyncio.ensure_future(count())
-        batcher.arrived("the desk")
-        await batcher.settle("the desk")
-        counter.cancel()
-        return turns
-
-    assert asyncio.run(alone()) <= batching.SETTLE_TURNS + 1
+    assert asyncio.run(_settling_turns(batcher, "the desk", arriving=False)) <= batching.SETTLE_TURNS + 1
     batcher.parse("the sofa")
     assert batches == [["the sofa", "a lamp", "the sink", "the bed", "the desk"]]
     asyncio.run(batcher.settle("the sofa"))  # parsed: settling returns at once
 
-    async def endless() -> int:  # a query arriving at every turn: the settling query still goes on
-        turns = 0
-
-        async def stream() -> None:
-            nonlocal turns
-            while True:
-                await asyncio.sleep(0)
-                turns += 1
-                batcher.arrived(f"query {turns}")
-
-        streaming = asyncio.ensure_future(stream())
-        batcher.arrived("the chair")
-        await batcher.settle("the chair")
-        streaming.cancel()
-        return turns
-
-    assert asyncio.run(endless()) <= batching.SETTLE_MAX_TURNS + 1
+    # a query arriving at every turn: the settling query still goes on
+    assert asyncio.run(_settling_turns(batcher, "the chair", arriving=True)) <= batching.SETTLE_MAX_TURNS + 1
 
 
 def test_concurrent_first_time_queries_are_parsed_together_and_answered_as_alone(apartment_store, monkeypatch):

@@ -1,7 +1,7 @@
 """Reading a referring expression for the spatial expert: the target kind, its colour, material
 and size words, the relations (on, under, above, below, next to, closest, farthest, between, corner,
 middle, wall, left/right/front/behind, extremes, ordinals) with their landmark categories, and the
-viewpoint ("facing the bed"). Lexicon-driven, from the shared query understanding."""
+viewpoint ("facing the wardrobe"). Lexicon-driven, from the shared query understanding."""
 
 from __future__ import annotations
 
@@ -97,7 +97,7 @@ class Relation:
 @dataclass
 class SpatialQuery:
     """A referring expression: target categories (empty = unnamed), its colour/material words,
-    the relations and the viewpoint landmark ("facing the bed")."""
+    the relations and the viewpoint landmark ("facing the wardrobe")."""
 
     target: tuple[str, ...] = ()
     attrs: tuple[tuple[str, str], ...] = ()
@@ -150,6 +150,7 @@ class _Reader:
                 # or a participle ("the plant standing by the tv"), not the noun of its lemma
                 or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
+        self.attr_words = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
         self.room_at = {s.end: tuple(("room", r) for r in s.values("room")) for s in spans
                         if s.has("room") and not s.has("cat")}
         #: token positions right after a colour, material or shape word ("glass [top]")
@@ -350,8 +351,7 @@ class _Reader:
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
         objects = self.cue_objects()  # with the apposition the parser hangs "one" on ("the metal [one]"), or
         objects |= set(self.structure.children(objects, "appos"))  # the number ("next to blue [one]", not "one chair")
-        looks = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
-        bare = {k for k in objects if k in looks or self.structure.words[k].pos != "NOUN"}
+        bare = {k for k in objects if k in self.attr_words or self.structure.words[k].pos != "NOUN"}
         objects |= set(self.structure.children(bare, "nummod"))
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
@@ -483,7 +483,7 @@ class _Reader:
         return self.landmark_relation(i, kind, nxt)
 
     def facing(self, i: int) -> int:
-        """The viewpoint of a cue ending before `i` ("facing the bed"). When the parse's target lies in a
+        """The viewpoint of a cue ending before `i` ("facing the wardrobe"). When the parse's target lies in a
         viewpoint clause the comma closes ("facing the window, the shelf on the left"), the target is the
         first free category after the comma that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""

@@ -136,8 +136,9 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     if landmark and not (fit >= 0.9).any():
         said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
         kind = said if said.any() else kind
-    in_room = kind & np.array([r in {v for k, v in attrs if k == "room"} for r in scene.rooms], bool)
-    kind = in_room if in_room.any() else kind  # a landmark's room ("the kitchen table"), when one is there
+    rooms = {v for k, v in attrs if k == "room"}  # a landmark's room ("the kitchen table"), when one is there
+    in_room = kind & np.array([r in rooms for r in scene.rooms], bool) if rooms else kind
+    kind = in_room if in_room.any() else kind
     attrs = tuple((k, v) for k, v in attrs if k not in ("size", "room"))  # sizes compare instances: see "extreme"
     if attrs and kind.any():
         fit = np.array([min(max((lex.attr_sim(k, v, vv) for kk, vv in a if kk == k), default=0.0) for k, v in attrs)
@@ -271,7 +272,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         lm = marks[0]
         if kind in ("on", "in"):  # "in": on one of its shelves, or on its top
             hit = geo.rests_on(tb, lm) | np.array([[int(i) in scene.on[t] for i in lm.ids] for t in targets])
-            hit |= geo.is_within(tb, lm) if kind == "in" else False
+            if kind == "in":
+                hit |= geo.is_within(tb, lm)
         elif kind == "under":
             hit = geo.is_under(tb, lm) | np.array([[int(i) in scene.under[t] for i in lm.ids] for t in targets])
         elif kind == "above":
