@@ -50,6 +50,15 @@ def _target(text: str) -> str | None:
     ("A kettle sits on the shelf above this worktop.", "worktop"),
     ("Is there a lamp near this desk?", "lamp"),                                # a question asks for the other
     ("Make your way to the ottoman by the fireplace.", "ottoman"),              # the way is how, not where               # where the speaker is is not the goal
+    ("walk over to the wider of the two rugs", "rugs"),                       # a comparative's partitive: its noun
+    ("Lead me to the shorter of those benches.", "benches"),
+    ("the far end of the sideboard, that lamp", "lamp"),                      # named again after a comma or colon
+    ("Tidy the crumbs off the bench by the piano: this plate, nothing else.", "plate"),
+    ("the kettle by the toaster, that one", "kettle"),                        # a stand-in named again: no change
+    ("My scarf is on the hook by the door.", "hook"),                         # where a thing of the speaker's is
+    ("I left my gloves on the bench in the hall", "bench"),
+    ("I dropped my pen near the radiator. Walk me to the rack it leans on.", "rack"),  # a command opening a sentence
+    ("walk to either of the stools by the counter, not the bar one in the den.", "stools"),  # no subject after it
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target
@@ -259,3 +268,7 @@ def test_a_request_without_words_reads_as_empty_not_as_an_error(text):
     from iesm_agent.understanding.spatial import parse_query
     info = analyse_query(text)
     assert not info.targets and not parse_query(text).relations
+
+
+def test_a_speakers_thing_with_no_place_said_names_no_target():
+    assert _target("my mug is empty") is None

@@ -10,6 +10,7 @@ from iesm_agent.providers.offline import OfflineModel
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore
 from iesm_agent.store.importers.objects import import_objects
+from iesm_agent.understanding import analyse_query
 from iesm_agent.understanding.spatial import parse_query
 
 
@@ -608,3 +609,51 @@ def test_relations_are_told_apart_by_identity_not_by_address():
     from iesm_agent.understanding.spatial import Relation
     a, b = Relation("near"), Relation("near")
     assert len({a, b}) == 2 and {a: 1}.get(b) is None
+
+
+# A study (x 0-4 m) beside a garage (x 4-6 m): three stools in the study at 0.8, 2.0 and 3.4 m along x,
+# a shelf and a crate in the garage, a bookcase against the study's west wall.
+TWO_ROOMS = [
+    box(1, "stool", (0.8, 1.0, 0.35), (0.4, 0.4, 0.7), room="study"),
+    box(2, "stool", (2.0, 1.0, 0.35), (0.4, 0.4, 0.7), room="study"),
+    box(3, "stool", (3.4, 1.0, 0.35), (0.4, 0.4, 0.7), room="study"),
+    box(4, "bookcase", (0.2, 2.0, 1.0), (0.4, 1.2, 2.0), room="study"),
+    box(5, "shelf", (5.5, 0.5, 1.0), (0.4, 1.0, 2.0), room="garage"),
+    box(6, "crate", (4.6, 2.5, 0.2), (0.5, 0.4, 0.4), room="garage"),
+]
+
+
+@pytest.fixture(scope="module")
+def two_rooms(tmp_path_factory):
+    return make_store(tmp_path_factory.mktemp("two_rooms"), TWO_ROOMS, name="two_rooms")
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the stool nearest to the garage", 3),
+    ("stool closest garage", 3),
+    ("which stool is furthest from the garage?", 1),
+    ("the stool on the garage side", 3),
+    ("the bookcase side stool", 1),
+])
+def test_a_room_or_a_thing_can_be_what_the_target_is_nearest(two_rooms, query, best):
+    # a room said after a word of nearness, or before "side", is a place the stool is near (the box
+    # around the objects shown in it), not the room the stool is in: no stool is in the garage
+    assert spatial(two_rooms, query)[0] == best
+
+
+@pytest.mark.parametrize("text", ["the stool nearest to the garage", "the stool on the garage side"])
+def test_a_room_the_target_is_near_is_not_its_room(text):
+    assert "garage" not in analyse_query(text).rooms
+
+
+def test_a_room_before_a_kind_named_with_side_is_the_targets_room():
+    assert analyse_query("garage side table").rooms == {"garage": 1.0}
+
+
+def test_a_class_noun_the_map_uses_as_a_label_prefers_that_label(tmp_path):
+    # "bucket" is a kind of container, as the box is; both are under the table, the label says "bucket"
+    store = make_store(tmp_path, [box(1, "table", (1.0, 1.0, 0.4), (1.2, 0.8, 0.8)),
+                                  box(2, "box", (0.7, 1.0, 0.15), (0.3, 0.3, 0.3)),
+                                  box(3, "bucket", (1.3, 1.0, 0.15), (0.3, 0.3, 0.3))])
+    assert analyse_query("the bucket under the table").generic is not None
+    assert spatial(store, "the bucket under the table")[0] == 3

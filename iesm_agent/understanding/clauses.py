@@ -7,6 +7,7 @@ reading (`spatial`: which noun is the landmark and which way the relation goes).
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 
 from ..lexicon import Span
 
@@ -34,6 +35,20 @@ _AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "ha
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
 #: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
 SIDE_NOUNS = frozenset({"left", "right", "front"})
+#: words of nearness after which a room is a place the target is near, not the room it is in
+NEARNESS = frozenset({"near", "nearer", "nearest", "close", "closer", "closest", "next", "beside", "adjacent",
+                      "far", "farther", "farthest", "further", "furthest", "away"})
+
+
+def near_room(words: list[str], start: int, end: int, named: Collection[int]) -> bool:
+    """True when the room named by `words[start:end]` follows a word of nearness, past "to" or "from"
+    ("the stool closest to the pantry", "far from the study"), or names a side ("on the study side";
+    not a kind named from `end`, one of the starts in `named`: "the study side table"): a place to be
+    near, not the target's room."""
+    k = start - 1
+    while k >= 0 and words[k] in ("to", "from"):
+        k -= 1
+    return k >= 0 and words[k] in NEARNESS or words[end:end + 1] == ["side"] and end not in named
 
 
 def _verb_like(word: str) -> bool:

@@ -38,6 +38,8 @@ _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", 
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
+#: prepositions that say where a thing is ("on the shelf", "next [to] the door")
+_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to"})
 NOUNS = ("NOUN", "PROPN")
 #: shorthand people type, spelt out in this order: "its" before a determiner, the contraction typed
 #: without its apostrophe ("its a chair"); "w/ a lid", "sofa + cushions"
@@ -183,7 +185,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         return _parse_sentences(text, at)
     words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
-    readings = [_sentence_target(doc, s) for s in sentences]
+    readings = [_restated(s, *_sentence_target(doc, s)) for s in sentences]
     if any(target is not None and not _stand_in(doc, target) for _, target in readings):
         readings = [("continuation", None) if _stand_in(doc, target) else (kind, target)
                     for kind, target in readings]  # "Take me to it.": about the one named before
@@ -286,6 +288,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
                                   or doc[found].head.lemma_ in _ACTIVITY_VERBS or _made(doc[found])):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
+        found = _where_kept(root) if found is None else found
         return ("request" if question else "personal"), found
     shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
                   and t.head != subject), None)
@@ -301,6 +304,29 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     return ("request" if question else "scene" if scene else "description"), found
 
 
+def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
+    """(kind, target) of a sentence whose target is named again, with "that" or "this", after a comma
+    or a colon and hung on the root or the target ("the far end of the bench, that stool"): that noun."""
+    said = next((t.i for t in sent if t.dep_ in ("appos", "npadvmod") and t.pos_ in NOUNS
+                 and t.head.i in (sent.root.i, found) and any(
+                     c.dep_ == "det" and c.lower_ in ("that", "this") and c.i > sent.start
+                     and c.nbor(-1).text in (",", ":") for c in t.children)), None)
+    return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
+
+
+def _where_kept(root) -> int | None:
+    """The place the speaker says a thing of theirs is ("my glasses are on the bookcase", "I left my
+    keys by the door"): the noun after the first place word on the verb; None when no thing of the
+    speaker's is placed."""
+    if not any(c.dep_ in ("nsubj", "dobj") and any(g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children)
+               for c in root.children):
+        return None
+    places = [p for h in (root, *root.children) for p in h.children if p.dep_ == "prep"
+              and p.lower_ in _PLACES and (h is root or h.dep_ in ("advmod", "acomp"))]
+    return next((k for p in sorted(places, key=lambda p: p.i) for g in p.children if g.dep_ == "pobj"
+                 and (k := _noun_of(g)) is not None), None)
+
+
 def _made(token) -> bool:
     """True for the object of a verb of making that the request brings into being: no determiner,
     or an indefinite one ("bake a loaf", "brew coffee"), not a thing already there ("the bed")."""
@@ -314,9 +340,11 @@ def _noun_of(token) -> int | None:
     the noun compounded with it; else None."""
     if token.pos_ in NOUNS:
         return token.i
-    if token.pos_ in ("PRON", "DET", "NUM"):  # "two of the mugs": the mugs
-        named = _partitive(token)
-        return named if named is not None and token.doc[named].pos_ in NOUNS else None
+    named = _partitive(token) if token.pos_ in ("PRON", "DET", "NUM", "ADJ") else None
+    if named is not None and token.doc[named].pos_ in NOUNS:  # "two of the mugs", "the wider of the rugs"
+        return named
+    if token.pos_ in ("PRON", "DET", "NUM"):
+        return None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
                  and c.pos_ in NOUNS and c.i == token.i - 1), None)
 
@@ -326,10 +354,11 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
     with no subject or "you"; of several, the last one with an object ("go to the hall and find the lamp")."""
     commands = [t for t in sent if _misread_verb(t) or (
         t.pos_ == "VERB" and t.tag_ in ("VB", "VBP")
-        and t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")
+        and (t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")  # or a motion verb opening it, parsed as a clause
+             or t.dep_ == "advcl" and t.i == sent.start and t.lower_ in MOTION_VERBS)
         and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
         and not any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children)
-        and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass")), True))]
+        and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass") and c.i < t.i), True))]
     if not commands:
         return None
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]

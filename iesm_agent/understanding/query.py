@@ -8,7 +8,7 @@ from functools import lru_cache
 from types import MappingProxyType, SimpleNamespace
 
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
-from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded
+from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded, near_room
 from .motion import MOTION_VERBS, strip_motion
 from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
 from .text import SENTENCE_MARK, Slot, clause_breaks, lemmatise, modifier_spans, read_slots, stem
@@ -338,12 +338,14 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
             info.target_phrase = " ".join(surface[s.start:s.end])
+            info.head_words = frozenset(lemmas[s.start:s.end])  # a label may say it ("bucket")
             _add_entry(afford, lex.generic[info.generic], 1.0)
             info.purpose = True
             continue
         if s.has("room") and not (in_target and s.has("cat")):
-            if _outside_target(reading.structure, surface, s, target, described, place_ok=True):
-                continue  # "a case for the office papers": the papers' room
+            if _outside_target(reading.structure, surface, s, target, described, place_ok=True) \
+                    or near_room(surface, s.start, s.end, {t.start for t in reading.spans if t.has("cat")}):
+                continue  # "a case for the office papers": the papers' room; "closest to the den": a landmark
             info.rooms.update({r: 1.0 for r in s.values("room")})
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue

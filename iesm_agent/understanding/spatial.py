@@ -9,7 +9,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
-from .clauses import BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded
+from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded,
+                      near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import NAMING, Word, normalise, parse_request
 from .query import analyse_query
@@ -151,8 +152,9 @@ class _Reader:
                 or toks[s.start].endswith("ing") and lemmas[s.start] != toks[s.start]))}
         self.attr_at = {s.end: s for s in spans if any(k in _LANDMARK_ATTRS for k, _ in s.kinds)}
         self.attr_words = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
-        self.room_at = {s.end: tuple(("room", r) for r in s.values("room")) for s in spans
-                        if s.has("room") and not s.has("cat")}
+        rooms = [s for s in spans if s.has("room") and not s.has("cat")]
+        self.room_at = {s.end: tuple(("room", r) for r in s.values("room")) for s in rooms}
+        self.near_rooms = {s.start: s.end for s in rooms if near_room(toks, s.start, s.end, self.cat_at)}  # "nearest the den"
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.finals = clause_final_words(text)
@@ -362,7 +364,7 @@ class _Reader:
             at = self.next_cat(pos)
             at = self.antecedent(objects) if at is None else at
             if at is None:
-                return False
+                return self.room_landmark(rel, pos)
             self.used.add(at)
             whole = self.whole_of(at)
             if whole is not None:  # "on the top shelf of the bookcase": in the bookcase, which holds its shelves
@@ -371,10 +373,40 @@ class _Reader:
                 self.used.add(at)
             self.taken.setdefault(rel, []).append(at)
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
+            if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
+                rel.kind = "closest"  # "on the window side (of the desk)": the side nearest the window
         rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
         rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end
         return True
+
+    def room_landmark(self, rel: Relation, pos: int) -> bool:
+        """A room said right after a word of nearness ("the stool closest to the pantry") as the
+        landmark of a relation of nearness: no category, the room's objects (`landmark_attrs`)."""
+        start = next((j for j in self.near_rooms if pos <= j <= pos + 1), None)
+        if start is None or rel.kind not in ("near", "closest", "farthest"):
+            return False
+        rel.landmarks.append(())
+        rel.landmark_attrs.append(self.room_at[self.near_rooms[start]])
+        self.last_landmark_end = self.near_rooms[start]
+        return True
+
+    def named_side(self, i: int) -> int:
+        """The position after the category or room phrase at `i`; a phrase other than the target's that
+        names a side ("the fridge side one", "on the hall side") is a landmark the target is closest to."""
+        span = self.cat_at.get(i)
+        end = span.end if span is not None else self.near_rooms[i]
+        if self.toks[end:end + 1] != ["side"] or end in self.cat_at or i == self.target_at or i in self.used:
+            return end
+        rel = Relation("closest")
+        self.out.relations.append(rel)
+        if span is None:
+            return end + self.room_landmark(rel, i)
+        self.used.add(i)
+        self.taken[rel] = [i]
+        rel.landmarks.append(tuple(span.values("cat")))
+        rel.landmark_attrs.append(self.attrs_before(i))
+        return end + 1
 
     def read(self) -> SpatialQuery:
         """The relations of the query, then its target."""
@@ -386,8 +418,8 @@ class _Reader:
             if toks[i] in _NEGATIONS:
                 negated.add(len(out.relations))
                 i += 1
-            elif i in self.cat_at:  # a category phrase is never a cue ("first aid kit", "corner shelf")
-                i = self.cat_at[i].end
+            elif i in self.cat_at or i in self.near_rooms:  # never a cue ("first aid kit", "corner shelf")
+                i = self.named_side(i)
             elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i):
                 out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS[toks[i]]))
                 i += 1

@@ -132,13 +132,13 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     lex = load_lexicon()
     fit = np.array([max((w * max(lex.concept_sim(q, c), _member(lex, q, c)) for c, w in concepts for q in cats),
                         default=0.0) for concepts in scene.concepts])
-    kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6
-    if landmark and not (fit >= 0.9).any():
+    kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6 if cats else np.ones(len(fit), bool)
+    if landmark and cats and not (fit >= 0.9).any():
         said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
         kind = said if said.any() else kind
     rooms = {v for k, v in attrs if k == "room"}  # a landmark's room ("the kitchen table"), when one is there
     in_room = kind & np.array([r in rooms for r in scene.rooms], bool) if rooms else kind
-    kind = in_room if in_room.any() else kind
+    kind = in_room if in_room.any() or not cats else kind  # no category: a room's objects ("nearest the den")
     attrs = tuple((k, v) for k, v in attrs if k not in ("size", "room"))  # sizes compare instances: see "extreme"
     if attrs and kind.any():
         fit = np.array([min(max((lex.attr_sim(k, v, vv) for kk, vv in a if kk == k), default=0.0) for k, v in attrs)
@@ -261,6 +261,10 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         if rel.landmark_where:
             where = _relation_scores(Relation(rel.landmark_where), scene, rows, view)
             rows = rows[where >= where.max() - 1e-9]
+        if not cats:  # a room ("the stool nearest the pantry"): one box around the objects shown in it
+            room = boxes.take(rows)
+            marks.append(geo.Boxes(np.array([-1]), room.lo.min(axis=0, keepdims=True), room.hi.max(axis=0, keepdims=True)))
+            continue
         for size in (v for k, v in attrs if k == "size" and v in SIZE_EXTREMES):
             extreme = _relation_scores(Relation("extreme", value=SIZE_EXTREMES[size]), scene, rows, view)
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
