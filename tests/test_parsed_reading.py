@@ -59,6 +59,7 @@ def _target(text: str) -> str | None:
     ("I left my gloves on the bench in the hall", "bench"),
     ("I dropped my pen near the radiator. Walk me to the rack it leans on.", "rack"),  # a command opening a sentence
     ("walk to either of the stools by the counter, not the bar one in the den.", "stools"),  # no subject after it
+    ("the stool is at the bench. is pres", "stool"),                          # a sentence cut short adds nothing
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target

@@ -270,7 +270,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     named = next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                   for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))),
                  None)
-    if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS) and named is None:
+    if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS or subject is None and first.pos_ == "AUX") \
+            and named is None:  # "It is by the desk.", "is next to" (a sentence cut short)
         return "continuation", None
     if command is not None:
         return "request", None
@@ -292,7 +293,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return ("request" if question else "personal"), found
     shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
                   and t.head != subject), None)
-    if shown is not None and not question and subject is not None and (subject.dep_ == "expl" or subject.pos_ in NOUNS):
+    if shown is not None and not question and subject is not None and (subject.dep_ in ("expl", "csubj") or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
     found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
@@ -316,7 +317,7 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
 
 def _where_kept(root) -> int | None:
     """The place the speaker says a thing of theirs is ("my glasses are on the bookcase", "I left my
-    keys by the door"): the noun after the first place word on the verb; None when no thing of the
+    umbrella by the stairs"): the noun after the first place word on the verb; None when no thing of the
     speaker's is placed."""
     if not any(c.dep_ in ("nsubj", "dobj") and any(g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children)
                for c in root.children):

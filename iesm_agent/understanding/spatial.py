@@ -374,7 +374,7 @@ class _Reader:
             self.taken.setdefault(rel, []).append(at)
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
-                rel.kind = "closest"  # "on the window side (of the desk)": the side nearest the window
+                rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
         rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
         rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end
@@ -393,7 +393,7 @@ class _Reader:
 
     def named_side(self, i: int) -> int:
         """The position after the category or room phrase at `i`; a phrase other than the target's that
-        names a side ("the fridge side one", "on the hall side") is a landmark the target is closest to."""
+        names a side ("the radiator side one", "on the porch side") is a landmark the target is closest to."""
         span = self.cat_at.get(i)
         end = span.end if span is not None else self.near_rooms[i]
         if self.toks[end:end + 1] != ["side"] or end in self.cat_at or i == self.target_at or i in self.used:
