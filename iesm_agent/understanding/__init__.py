@@ -1,7 +1,6 @@
-"""Shared query understanding: what a query asks for and what map labels, rooms and candidate
-records denote (lexicon first, sentence embeddings for words the lexicon does not know). Used by
-every provider's prompts as well as by candidate selection; depends only on the lexicon and the
-encoder."""
+"""Shared query understanding: what a query asks for and what map labels, rooms and candidate records denote (lexicon
+first, sentence embeddings for words the lexicon does not know). Used by every provider's prompts as well as by
+candidate selection; depends only on the lexicon and the encoder."""
 
 from .grounding import ground_query
 from .labels import Record, candidate_from_line, label_concepts, room_of, text_slots

@@ -1,8 +1,7 @@
-"""Relative clauses whose preposition has no object of its own ("the cabinet the printer sits on",
-"the sink with the mirror above it", "the one the calendar hangs over"): the noun inside the clause
-is the landmark, the noun before it the target, and the relation points from the landmark to the
-target. Shared by the query reading (`query`: where the target phrase ends) and the spatial
-reading (`spatial`: which noun is the landmark and which way the relation goes)."""
+"""Relative clauses whose preposition has no object of its own ("the cabinet the printer sits on", "the sink with the
+mirror above it", "the one the calendar hangs over"): the noun inside the clause is the landmark, the noun before it the
+target, and the relation points from the landmark to the target. Shared by the query reading (`query`: where the target
+phrase ends) and the spatial reading (`spatial`: which noun is the landmark and which way the relation goes)."""
 
 from __future__ import annotations
 
@@ -41,19 +40,13 @@ NEARNESS = frozenset({"near", "nearer", "nearest", "close", "closer", "closest",
 
 
 def near_room(words: list[str], start: int, end: int, named: Collection[int]) -> bool:
-    """True when the room named by `words[start:end]` follows a word of nearness, past "to" or "from"
-    ("the stool closest to the pantry", "far from the study"), or names a side ("on the study side";
-    not a kind named from `end`, one of the starts in `named`: "the study side table"): a place to be
-    near, not the target's room."""
+    """True when the room named by `words[start:end]` follows a word of nearness, past "to" or "from" ("the stool
+    closest to the pantry", "far from the study"), or names a side ("on the study side"; not a kind named from `end`,
+    one of the starts in `named`: "the study side table"): a place to be near, not the target's room."""
     k = start - 1
     while k >= 0 and words[k] in ("to", "from"):
         k -= 1
     return k >= 0 and words[k] in NEARNESS or words[end:end + 1] == ["side"] and end not in named
-
-
-def _verb_like(word: str) -> bool:
-    """True for auxiliaries, adverbs of the clause and inflected verb forms ("sits", "mounted")."""
-    return word in _AUXILIARIES or word.endswith(("ed", "ing")) or (word.endswith("s") and not word.endswith("ss"))
 
 
 def clause_final_words(text: str) -> frozenset[str]:
@@ -72,14 +65,15 @@ def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
 
 
 def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int) -> int | None:
-    """Start of the category phrase a stranded preposition at `toks[cue_start]` relates to: the
-    last one ending at most `MAX_VERB_WORDS` words before it, when a target comes before that
-    phrase (another category phrase, or "the one"). `categories` maps token starts to spans."""
+    """Start of the category phrase a stranded preposition at `toks[cue_start]` relates to: the last one
+    ending at most `MAX_VERB_WORDS` verb forms before it (auxiliaries, "sits", "mounted"), when a target
+    comes before that phrase (another category phrase, or "the one"). `categories` maps token starts to spans."""
     while cue_start > 0 and (toks[cue_start - 1] in STRANDABLE or toks[cue_start - 1] in RELATION_NOUNS):
         cue_start -= 1  # the relation's first word: "on top of", "to the left of", "next to"
     before = sorted(s for s, span in categories.items() if span.end <= cue_start)
     last = before[-1] if before else None
-    if last is None or cue_start - categories[last].end > MAX_VERB_WORDS \
-            or not all(_verb_like(w) for w in toks[categories[last].end:cue_start]):
+    if last is None or cue_start - categories[last].end > MAX_VERB_WORDS or not all(
+            w in _AUXILIARIES or w.endswith(("ed", "ing")) or (w.endswith("s") and not w.endswith("ss"))
+            for w in toks[categories[last].end:cue_start]):
         return None  # "the cushion with the pattern on it": the clause's noun is another word
     return last if len(before) > 1 or TARGET_PRONOUNS.intersection(toks[:last]) else None

@@ -56,8 +56,7 @@ def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
             if joiner == "of" and left[-1] in lex.words["collective_strict"] | lex.words["weak_heads"]:
                 return _phrase_concepts(lex, right)
             main = _phrase_concepts(lex, left)
-            return main | {c: w * _SECONDARY_WEIGHT for c, w in _phrase_concepts(lex, right).items()
-                           if c not in main}
+            return main | {c: w * _SECONDARY_WEIGHT for c, w in _phrase_concepts(lex, right).items() if c not in main}
     return _phrase_concepts(lex, words)
 
 
@@ -129,10 +128,6 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
         ident = int(ident)
     if not isinstance(ident, int) or isinstance(ident, bool):
         return None
-    return ident, _record(data)
-
-
-def _record(data: dict) -> Record:
     label, caption, room = (_as_text(data.get(k)) for k in ("label", "caption", "room"))
     concepts = dict(label_concepts(label))
     alts = data.get("alt_labels")
@@ -144,18 +139,16 @@ def _record(data: dict) -> Record:
     tags = data.get("tags")
     parts = [label, caption] + ([_as_text(v) for v in tags.values()] if isinstance(tags, dict) else [])
     profiles, slots = [_caption_profile(p) for p in parts], [text_slots(p) for p in parts]
-    return Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
-                  room=room_of(room), attrs=frozenset().union(*(a for a, _ in profiles)),
-                  words=frozenset().union(*(w for _, w in profiles)), label_words=profiles[0][1],
-                  text=". ".join(p for p in (label, caption) if p),
-                  slots=tuple(dict.fromkeys(s for found, _ in slots for s in found)),
-                  stems=frozenset().union(*(st for _, st in slots)),
-                  room_words=frozenset(lex.lemma(t) for t in lex.tokens(room) if t.isalpha()))
+    return ident, Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
+                         room=room_of(room), attrs=frozenset().union(*(a for a, _ in profiles)),
+                         words=frozenset().union(*(w for _, w in profiles)), label_words=profiles[0][1],
+                         text=". ".join(p for p in (label, caption) if p),
+                         slots=tuple(dict.fromkeys(s for found, _ in slots for s in found)),
+                         stems=frozenset().union(*(st for _, st in slots)),
+                         room_words=frozenset(lex.lemma(t) for t in lex.tokens(room) if t.isalpha()))
 
 
 def _as_text(value) -> str:
-    if value is None:
-        return ""
     if isinstance(value, (list, tuple)):
         return ", ".join(_as_text(v) for v in value)
-    return str(value)
+    return "" if value is None else str(value)

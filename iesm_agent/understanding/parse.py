@@ -96,11 +96,10 @@ class Word:
 
 @dataclass(frozen=True)
 class Structure:
-    """What the parse says about a request. `target` is the word index of the target noun
-    (None: the parse names none); `phrase` the (first, last) word indices of its noun phrase
-    (determiners excluded); `request` the character range of the sentences that make the
-    request (the target's sentence and the sentences that continue it); `context` the character
-    ranges of what only says why ("I spilled juice.")."""
+    """What the parse says about a request. `target` is the word index of the target noun (None: the parse names none);
+    `phrase` the (first, last) word indices of its noun phrase (determiners excluded); `request` the character range of
+    the sentences that make the request (the target's sentence and the sentences that continue it); `context` the
+    character ranges of what only says why ("I spilled juice.")."""
 
     words: tuple[Word, ...]
     target: int | None
@@ -154,9 +153,8 @@ def normalise(text: str) -> str:
 
 @lru_cache(maxsize=4096)
 def parse_request(text: str) -> Structure:
-    """The structure of `text` (a request of one or more sentences); a leading clause that only
-    rules out ("Not the one on the piano: the vase on the sill") is left out of the parse and
-    marked `excluded`."""
+    """The structure of `text` (a request of one or more sentences); a leading clause that only rules out ("Not the one
+    on the piano: the vase on the sill") is left out of the parse and marked `excluded`."""
     fronted = _FRONTED_EXCLUSION.match(text)
     if fronted is None or not any(c.isalpha() for c in text[fronted.end():]):
         return _parse_sentences(text)
@@ -186,9 +184,10 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
     readings = [_restated(s, *_sentence_target(doc, s)) for s in sentences]
-    if any(target is not None and not _stand_in(doc, target) for _, target in readings):
-        readings = [("continuation", None) if _stand_in(doc, target) else (kind, target)
-                    for kind, target in readings]  # "Take me to it.": about the one named before
+    # target words that only point back ("take me to it", "the leather one"): about the one named before
+    stand_ins = {t for _, t in readings if t is not None and doc[t].lower_ in STAND_INS and _antecedent(doc, t) == t}
+    if any(target is not None and target not in stand_ins for _, target in readings):
+        readings = [("continuation", None) if target in stand_ins else (kind, target) for kind, target in readings]
     chosen = _choose_sentence(readings)
     if chosen is None:
         return Structure(words, None, None, (at, len(text)), (), text=text)
@@ -204,7 +203,13 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
-    phrase = _noun_phrase(doc, target) if target is not None else None
+    phrase = None
+    if target is not None:  # its noun phrase: compounds, adjectives, numbers and possessors before it, no determiners
+        first = min([target] + [c.left_edge.i for c in doc[target].lefts if c.dep_ in (
+            "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
+        while first < target and doc[first].dep_ in ("det", "predet", "case", "punct"):
+            first += 1
+        phrase = first, target
     # what the request wants out of: the object of "leave"/"exit" or the noun after "out of" ("out of this garage")
     leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
@@ -218,11 +223,6 @@ def _wished_portion(token) -> bool:
     return token.lemma_ in _PORTIONS and _partitive(token) is not None and (  # every word of a parse: vessels first
         token.dep_ == "pobj" and token.head.lower_ == "for" or token.dep_ == "dobj" and (
             _made(token) or any(c.dep_ == "nsubj" and c.lower_ in _PERSONAL for c in token.head.children)))
-
-
-def _stand_in(doc, index: int | None) -> bool:
-    """True for a target word that only points back ("take me to it", "the leather one")."""
-    return index is not None and doc[index].lower_ in STAND_INS and _antecedent(doc, index) == index
 
 
 def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
@@ -291,16 +291,14 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
         found = _where_kept(root) if found is None else found
         return ("request" if question else "personal"), found
-    shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
-                  and t.head != subject), None)
+    dets = [t for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that") and t.head.pos_ in NOUNS]
+    shown = next((t.head.i for t in dets if t.lower_ == "this" and t.head != subject), None)
     if shown is not None and not question and subject is not None and (subject.dep_ in ("expl", "csubj") or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
     found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
-    found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
-    if found is None:  # "a shelf is mounted in front of this chair": the demonstrative names it
-        found = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that")
-                      and t.head.pos_ in NOUNS), None)
+    # else the noun named, the verb's object, a demonstrative's noun ("a shelf is mounted in front of this chair")
+    found = next((k for k in (found, named, _object_of(doc, root), *(t.head.i for t in dets)) if k is not None), None)
     scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
     return ("request" if question else "scene" if scene else "description"), found
 
@@ -316,9 +314,8 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
 
 
 def _where_kept(root) -> int | None:
-    """The place the speaker says a thing of theirs is ("my glasses are on the bookcase", "I left my
-    umbrella by the stairs"): the noun after the first place word on the verb; None when no thing of the
-    speaker's is placed."""
+    """The place the speaker says a thing of theirs is ("my glasses are on the bookcase", "I left my umbrella by the
+    stairs"): the noun after the first place word on the verb; None when no thing of the speaker's is placed."""
     if not any(c.dep_ in ("nsubj", "dobj") and any(g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children)
                for c in root.children):
         return None
@@ -360,10 +357,8 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
         and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
         and not any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children)
         and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass") and c.i < t.i), True))]
-    if not commands:
-        return None
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]
-    return next(((t, obj) for t, obj in found if obj is not None), found[-1])
+    return next(((t, obj) for t, obj in found if obj is not None), found[-1] if found else None)
 
 
 def _misread_verb(token) -> bool:
@@ -382,8 +377,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
     for child in () if clauses_only else verb.children:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
-        found = _object_of(doc, child) if way else \
-            child.i if child.lower_ in ("one", "ones") else _noun_of(child)
+        found = _object_of(doc, child) if way else child.i if child.lower_ in ("one", "ones") else _noun_of(child)
         dative = child.dep_ == "ccomp" and any(g.dep_ == "nsubj" and g.lower_ in ("me", "us") for g in child.children)
         if found is not None and (way or dative or child.dep_ in ("dobj", "attr", "oprd")):
             return found  # ("find me one of the lamps", parsed with "me" as the subject of "one")
@@ -437,13 +431,3 @@ def _partitive(token) -> int | None:
     of = next((c for c in token.children if c.dep_ == "prep" and c.lower_ == "of"), None)
     return next((g.i for g in of.children if g.dep_ == "pobj" and (g.pos_ in NOUNS or g.lower_ == "them")),
                 None) if of else None
-
-
-def _noun_phrase(doc, index: int) -> tuple[int, int]:
-    """(first, last) word index of the noun phrase headed by `index`: its compounds, adjectives,
-    numbers and possessors before it, determiners left out."""
-    first = min([index] + [c.left_edge.i for c in doc[index].lefts if c.dep_ in (
-        "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
-    while first < index and doc[first].dep_ in ("det", "predet", "case", "punct"):
-        first += 1
-    return first, index

@@ -127,16 +127,16 @@ def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span
     index = None if structure.target is None else _surface_index(surface, structure.words[structure.target])
     if index is None:
         return None  # no target, or its word is not among the request's tokens
-    first = structure.words[structure.phrase[0]].start
-    phrase_start = next((i for i, t in enumerate(surface) if t.at >= first), index)
+    phrase_start = next((i for i, t in enumerate(surface) if t.at >= structure.words[structure.phrase[0]].start), index)
     head = next((s for s in spans if s.start <= index < s.end), None)
     if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
         return _Target(min(phrase_start, head.start), head.end, None, structure.target)
     if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
     following = {s.start: s for s in spans if s.has("cat")}
-    while head.end in following and _adjacent(surface, head.end):
-        head = following[head.end]  # a compound the parse split ("the notebook pc"): its last noun
+    # a compound the parse split ("the notebook pc", one space between as written): its last noun
+    while head.end in following and surface[head.end].at == surface[head.end - 1].at + len(surface[head.end - 1]) + 1:
+        head = following[head.end]
     return _Target(min(phrase_start, head.start), head.end, head, structure.target)
 
 
@@ -145,22 +145,15 @@ def _surface_index(surface: list[_Token], word: Word) -> int | None:
     return next((i for i, t in enumerate(surface) if word.start <= t.at < word.start + len(word.text)), None)
 
 
-def _adjacent(surface: list[_Token], i: int) -> bool:
-    """True when surface token `i` follows token `i - 1` with one space between, as written."""
-    return surface[i].at == surface[i - 1].at + len(surface[i - 1]) + 1
-
-
 def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Target:
-    """The target phrase read from the word order when the parse names no known category: it
-    ends at the first boundary word (a relative clause, landmark or room) or where a clause
-    about a landmark begins (`clause`); its head is the rightmost specific category before that (not an
-    attribute word before an abstract noun: "the glass object" is no drinking glass), its `word` the
-    parse's word for that head, else the parse's target ("the thing", "something")."""
+    """The target phrase read from the word order when the parse names no known category: it ends at the first boundary
+    word (a relative clause, landmark or room) or where a clause about a landmark begins (`clause`); its head is the
+    rightmost specific category before that (not an attribute word before an abstract noun: "the glass object" is no
+    drinking glass), its `word` the parse's word for that head, else the parse's target ("the thing", "something")."""
     bounds, abstract = lex.words["boundaries"], lex.words["abstract"]
     lemmas, spans = reading.lemmas, reading.spans
     inner = {i for s in spans for i in range(s.start + 1, s.end)}  # "set of towels" is one phrase
-    end = next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas))
-    end = min([end, *clause])
+    end = min([next((i for i, t in enumerate(lemmas) if t in bounds and i not in inner), len(lemmas)), *clause])
     one = reading.structure.target  # "the big one facing the window": the phrase ends at the "one"
     if one is not None and reading.structure.words[one].text.lower() in ("one", "ones"):
         end = next((i + 1 for i, t in enumerate(reading.surface) if t.at == reading.structure.words[one].start), end)
@@ -190,8 +183,7 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
             or owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of it
         return False  # "in brown leather": the material is the target's
     via = structure.words[owner.head].text.lower()
-    places = _PLACE_PREPOSITIONS | {"at"} if place_ok else frozenset()
-    return not (owner.dep == "pobj" and (via in _PART_WORDS or via in places))
+    return not (owner.dep == "pobj" and (via in _PART_WORDS or place_ok and via in _PLACE_PREPOSITIONS | {"at"}))
 
 
 @dataclass
@@ -225,15 +217,13 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
                   default=len(tokens))
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:end])))
         tokens = tokens[:marker[0]] + tokens[end:]
+    preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])]
     # a request phrase ("go to", "take me to", "find") after at least two words: what comes before it only says why
     start = next((i for i in range(2, len(tokens) - 1) if tokens[i] in MOTION_VERBS | _REQUEST_OPENERS
                   and tokens[i - 1] != "to" and _command_at(lex, tokens, i)), None)  # not "to get it dried"
-    request, preamble = (tokens, []) if start is None else (tokens[start:], tokens[:start])
-    if structure.target is None or not request or structure.words[structure.target].start >= request[0].at:
-        tokens = request  # "My feet are cold, take me to a rug"
-    else:
-        preamble = []  # the parse's target comes first ("A round rug by the door. Head there.")
-    preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])] + preamble
+    # ("My feet are cold, take me to a rug"); not when the parse's target is first ("A rug by the door. Head there.")
+    if start is not None and (structure.target is None or structure.words[structure.target].start >= tokens[start].at):
+        preamble, tokens = preamble + tokens[:start], tokens[start:]
     tokens = strip_motion(tokens)
     while n := _command_at(lex, tokens, 0):  # without the request phrases it opens with ("do show me the way to")
         tokens = tokens[n:]
@@ -259,8 +249,7 @@ def analyse_query(text: str) -> QueryInfo:
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
     info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
-    categories = {sp.start: sp for sp in reading.spans if sp.has("cat")}
-    clause = _landmark_clauses(reading.surface, categories, clause_final_words(reading.text))
+    clause = _landmark_clauses(reading)
     # the target phrase: from the parse when it names a known kind, else from the word order
     target = (_parsed_target(reading.structure, reading.surface, reading.spans)
               or _ordered_target(lex, reading, clause))
@@ -303,21 +292,11 @@ def analyse_query(text: str) -> QueryInfo:
     return QueryInfo(**vars(info))
 
 
-def _in_target_phrase(reading: _Reading, target: _Target, index: int) -> bool:
-    """True when surface token `index` is a noun the parse puts under the target noun, not the head
-    itself ("the grey file with a tag on the spine"): a use it hints at describes the thing rather than
-    says what to do (a head noun that is a cue names a class of things: a perch to sit on)."""
-    structure = reading.structure
-    word = structure.index_at(reading.surface[index].at)
-    return (word is not None and target.word is not None and word != target.word
-            and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
-
-
 def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[int],
                 info: SimpleNamespace) -> tuple[dict[str, float], list[Span], set[str]]:
     """Fill `info` from the lexicon spans: the head's categories, rooms, attributes of the target
     and the landmarks named beside it; return (function evidence, attribute spans, landmark words)."""
-    surface, lemmas, head = reading.surface, reading.lemmas, target.head
+    structure, surface, lemmas, head = reading.structure, reading.surface, reading.lemmas, target.head
     afford: dict[str, float] = {}
     landmark_words: set[str] = set()
     attr_spans: list[Span] = []
@@ -327,30 +306,29 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                                         for s in reading.spans)
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
-        if s is head:
-            info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
+        if s is head or s.has("gen") and in_target:  # a class noun's words too: a label may say it ("bucket")
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
+        if s is head:
+            info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
             attr_spans.extend(modifier_spans(lex, lemmas, s))
             info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]
                                for kind, v in lex.phrases.get((w,), ()) if kind == "room"})  # "bath towel"
             continue
         if s.has("gen") and in_target:
             info.generic = s.values("gen")[0]
-            info.target_phrase = " ".join(surface[s.start:s.end])
-            info.head_words = frozenset(lemmas[s.start:s.end])  # a label may say it ("bucket")
             _add_entry(afford, lex.generic[info.generic], 1.0)
             info.purpose = True
             continue
         if s.has("room") and not (in_target and s.has("cat")):
-            if _outside_target(reading.structure, surface, s, target, described, place_ok=True) \
+            if _outside_target(structure, surface, s, target, described, place_ok=True) \
                     or near_room(surface, s.start, s.end, {t.start for t in reading.spans if t.has("cat")}):
                 continue  # "a case for the office papers": the papers' room; "closest to the den": a landmark
             info.rooms.update({r: 1.0 for r in s.values("room")})
             info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr and not s.has("cue") and not in_target and _outside_target(reading.structure, surface, s, target, described):
+        if attr and not s.has("cue") and not in_target and _outside_target(structure, surface, s, target, described):
             continue  # "where do I hang my wet coat": wet is the coat, not the target
         info.attrs = info.attrs + tuple(kv for kv in attr if kv not in info.attrs)
         attr_spans += [s] if attr else []
@@ -359,8 +337,12 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if s.has("cue") and s.start not in clause:
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
-            info.purpose = (info.purpose or s.end - s.start > 1 or info.abstract
-                            or not _in_target_phrase(reading, target, s.start))
+            # a cue on a noun the parse puts under the target noun ("the grey file with a tag on the spine") describes
+            # the thing, not what to do (a head noun that is a cue names a class of things: a perch to sit on)
+            word = structure.index_at(surface[s.start].at)
+            info.purpose = info.purpose or s.end - s.start > 1 or info.abstract or not (
+                word is not None and target.word is not None and word != target.word
+                and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
         if s.has("cat") and not in_target:
             named = {c: _THEME_WEIGHT for c in s.values("cat") if c not in _UNSPECIFIC}
             info.landmarks.update(named)
@@ -376,8 +358,7 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
                 landmark_words: set[str], info: SimpleNamespace) -> None:
     """Fill `info`'s attribute slots, loose words and the words the lexicon does not know (a
     target or room phrase to ground in the map)."""
-    surface, lemmas = reading.surface, reading.lemmas
-    bounds = lex.words["boundaries"]
+    surface, lemmas, bounds = reading.surface, reading.lemmas, lex.words["boundaries"]
     slots, used = read_slots(lex, lemmas, attr_spans)
     info.slots = tuple(dict.fromkeys(slots))
     stop = (lex.words["skip"] | bounds | lex.words["abstract"] | lex.words["color_suffixes"]
@@ -408,16 +389,16 @@ def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop
                  start: int, end: int, *, whole: bool) -> str | None:
     """The content words of `start:end` that no lexicon phrase covers, as written; None when
     there are none, or (`whole`) when any word of the span is a lexicon phrase."""
-    if start >= end or (whole and any(i in known for i in range(start, end))):
+    if whole and any(i in known for i in range(start, end)):
         return None
-    words = [surface[i] for i in range(start, end)
-             if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()]
-    return " ".join(words) or None
+    return " ".join(surface[i] for i in range(start, end)
+                    if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()) or None
 
 
-def _landmark_clauses(surface: list[_Token], categories: dict[int, Span], finals: frozenset[str]) -> set[int]:
+def _landmark_clauses(reading: _Reading) -> set[int]:
     """Token positions of relative clauses about a landmark whose preposition is stranded: from
     the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
+    surface, categories = reading.surface, {sp.start: sp for sp in reading.spans if sp.has("cat")}
     starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
-              if token in STRANDABLE and is_stranded(surface, k + 1, finals)}
+              if token in STRANDABLE and is_stranded(surface, k + 1, clause_final_words(reading.text))}
     return {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}

@@ -80,11 +80,10 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
 
 @dataclass(eq=False)  # one statement of one request, told apart by identity (`_Reader.taken`)
 class Relation:
-    """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark,
-    "on the top shelf of the bookcase"), landmark categories (one tuple of canonical categories per
-    landmark), `value` (extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark";
-    middle: "group" for the middle one of the target's kind, else the room's middle or a landmark's),
-    `order` (1-based, -1 = last)."""
+    """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark, "on the top shelf
+    of the bookcase"), landmark categories (one tuple of canonical categories per landmark), `value` (extreme:
+    large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the
+    target's kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
 
     kind: str
     landmarks: list[tuple[str, ...]] = field(default_factory=list)
@@ -134,13 +133,12 @@ class _Reader:
     def __init__(self, text: str):
         self.text = text
         lex = self.lex = load_lexicon()
-        corrected = normalise(lex.respell(text))
+        self.corrected = corrected = normalise(lex.respell(text))
         self.structure = parse_request(corrected)
         kept = _side_words([(t, at) for t, at in lex.token_offsets(corrected) if t not in lex.words["skip"]
                             or t == "one"], corrected)
         self.toks = toks = [t for t, _ in kept]
         self.offsets = [at for _, at in kept]
-        self.corrected = corrected
         self.words = [self.structure.index_at(at) for _, at in kept]  # each token's parsed word
         self.lemmas = lemmas = lemmatise(lex, toks)
         spans = lex.scan(lemmas, clause_breaks(corrected, kept))
@@ -157,12 +155,13 @@ class _Reader:
         self.near_rooms = {s.start: s.end for s in rooms if near_room(toks, s.start, s.end, self.cat_at)}  # "nearest the den"
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
-        self.finals = clause_final_words(text)
         self.out = SpatialQuery()
         self.last_landmark_end = -1
         self.taken: dict[Relation, list[int]] = {}  # relation -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
+        #: start of a category span -> the parsed words of its tokens
+        self.span_words = {j: set(self.words[s.start:s.end]) for j, s in self.cat_at.items()}
         #: parsed word -> start of the category span holding its first token (`.get`: None when none holds it)
         self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
                         for i, word in reversed(list(enumerate(self.words))) if word is not None}
@@ -183,8 +182,6 @@ class _Reader:
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun
         the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
-        if self.cue_word is None:
-            return None
         st, cue = self.structure, self.noun_of(self.cue_word)
         below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)}
         return below if any(st.words[k].pos in ("NOUN", "PROPN", "PRON") for k in below) else None
@@ -219,10 +216,9 @@ class _Reader:
             for j in map(self.span_of.get, st.children(of, "pobj"))))
 
     def located_by_pronoun(self, kind: str) -> bool:
-        """Read the relation of `kind` seen from the target when the cue places another thing relative
-        to it, its object only pointing back ("there is a hamper [to its left]", "a fruit bowl sits on
-        the sideboard", said of the sideboard): the noun the phrase hangs on, or the subject or object
-        of its verb; False when there is none."""
+        """Read the relation of `kind` seen from the target when the cue places another thing relative to it, its object
+        only pointing back ("there is a hamper [to its left]", "a fruit bowl sits on the sideboard", said of the
+        sideboard): the noun the phrase hangs on, or the subject or object of its verb; False when there is none."""
         below, st = self.cue_object(), self.structure
         if kind not in INVERSE_RELATION or below is None or not any(self.points_back(k) for k in below) \
                 or any(self.span_of.get(k) is not None and not self.points_back(k) for k in below):
@@ -231,11 +227,9 @@ class _Reader:
         while st.words[k].pos in ("ADP", "ADV") and st.words[k].head != k:
             k = st.words[k].head  # "to [its left]": the phrase's own head
         if st.words[k].pos not in ("NOUN", "PROPN"):
-            k = next((c for c in st.children(k, "attr", "nsubj", "dobj")
-                      if self.span_of.get(c) is not None), None)
+            k = next((c for c in st.children(k, "attr", "nsubj", "dobj") if self.span_of.get(c) is not None), None)
         j = self.span_of.get(k)
-        return j is not None and j not in self.used and not self.points_back(k) \
-            and self.seen_from_target(kind, j)
+        return j is not None and j not in self.used and not self.points_back(k) and self.seen_from_target(kind, j)
 
     def attrs_before(self, start: int) -> tuple[tuple[str, str], ...]:
         """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured",
@@ -249,28 +243,16 @@ class _Reader:
             end = s.start if s else end - 1
         return tuple(found)
 
-    def compounds_before(self, start: int) -> frozenset[str]:
-        """Lemmas of the nouns that modify the noun at `start` from its left ("the bar seat": bar)."""
-        end = start
-        while end > 0 and self.word(end - 1).dep == "compound":
-            end -= 1
-        described = {k for span in self.attr_at.values() for k in range(span.start, span.end)}
-        return frozenset(self.lemmas[k] for k in range(end, start) if k not in described)
-
     def next_cat(self, pos: int) -> int | None:
         """Start of the first free category span from `pos` within what the current cue governs;
         of those, the one that heads the cue's object ("on the piano [bench]": not the piano)."""
         below = self.cue_object()  # None: the parse gives the cue no noun, any span may serve
         found = [j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
-                 and (below is None or below & set(self._span_words(j)))]
+                 and (below is None or below & self.span_words[j])]
         if len(found) > 1 and below is not None:
             objects = self.cue_objects()
-            found = [j for j in found if objects & set(self._span_words(j))] + found
+            found = [j for j in found if objects & self.span_words[j]] + found
         return found[0] if found else None
-
-    def _span_words(self, j: int) -> list[int | None]:
-        """Parsed words of the tokens of the category span at `j`."""
-        return self.words[self.cat_at[j].start:self.cat_at[j].end]
 
     def cue_objects(self) -> set[int]:
         """Parsed words that are the current cue's own objects: its noun objects, those of its
@@ -303,15 +285,13 @@ class _Reader:
         "of" said of the target ("the cup on top"); not a place on a plan (`on_a_plan`)."""
         if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None or self.on_a_plan(i):
             return False
-        st, k = self.structure, self.words[i]
-        word = st.words[k]
+        st, k, word = self.structure, self.words[i], self.word(i)
         if st.children(k, "amod", "compound") or i in self.part_described:
             return False  # the top itself described ("a glass top table"): a part, not a height
         if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place;
             owner = self.span_of.get(word.head)  # of a part of a landmark: "on the top shelf of the bookcase"
             return self.target_at is not None and owner is not None and owner in (self.target_at, *self.parts)
-        if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") \
-                or st.of_phrase(k) is not None:
+        if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") or st.of_phrase(k) is not None:
             return False
         owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
         if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
@@ -324,12 +304,9 @@ class _Reader:
         part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"): free, not the target and
         of another kind (not "the left stool of the three stools"); else None."""
         st, head = self.structure, self.words[self.cat_at[at].end - 1]
-        of = st.of_phrase(head)
-        whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
-        if whole is None or whole in self.used or whole == self.target_at \
-                or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")):
-            return None
-        return whole
+        whole = next((j for j in map(self.span_of.get, st.children(st.of_phrase(head), "pobj")) if j is not None), None)
+        held = whole is None or whole in self.used or whole == self.target_at
+        return None if held or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")) else whole
 
     def antecedent(self, objects: set[int]) -> int | None:
         """Start of the category span that a pronoun the cue takes stands for when the cue places the
@@ -443,7 +420,7 @@ class _Reader:
         words, kind = cue
         end = i + len(words)
         self.cue_word = self.words[end - 1]
-        stranded = kind in INVERSE_RELATION and is_stranded(toks, end, self.finals)
+        stranded = kind in INVERSE_RELATION and is_stranded(toks, end, clause_final_words(self.text))
         if (self.word(end - 1).dep == "prt" and not stranded  # "switch on the lamp": a particle of the verb
                 # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
                 or kind in ("left", "right") and self.turned_to(self.cue_word)  # "facing left": turned
@@ -480,15 +457,16 @@ class _Reader:
 
     def relation(self, i: int, words: tuple[str, ...], kind: str) -> int:
         """Read the relation of `kind` whose cue `words` ends before `i`; the position after it."""
-        toks, out = self.toks, self.out
+        toks, out, st = self.toks, self.out, self.structure
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
         side_noun = (nxt in ("left", "right") or _CUES.get((nxt,)) in COMPASS) \
             and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
-        if kind != "facing" and len(words) == 1 and self.said_by_someone(i - 1):
-            return i  # "the mug I left there": a verb with its subject, not a relation
+        if kind != "facing" and len(words) == 1 and self.word(i - 1).pos in ("VERB", "AUX") and any(
+                st.words[k].pos == "PRON" for k in st.children(self.words[i - 1], "nsubj")):
+            return i  # "the mug I left there": a verb with a pronoun subject (not just tagged a verb: "..., left jar")
         if kind in ("on", "wall") and nxt in _WALL_WORDS:
             out.relations.append(Relation("wall"))
             return i + 1
@@ -589,7 +567,7 @@ class _Reader:
             return
         j = self.taken[rel][-1]
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
-        if not objects & set(self._span_words(j)) and not part:
+        if not objects & self.span_words[j] and not part:
             return  # "standing at the centre of the hall, ...": no object the cue takes
         setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
 
@@ -608,13 +586,6 @@ class _Reader:
         if self.landmark(self.pending_ordinal, i):
             self.pending_ordinal.value = "landmark"
         return i
-
-    def said_by_someone(self, i: int) -> bool:
-        """True when the parse reads token `i` as a verb with a pronoun subject ("the scarf she left
-        on the hook"), not a cue word the tagger merely calls a verb ("facing the stove, left jar")."""
-        at, st = self.words[i], self.structure
-        return at is not None and st.words[at].pos in ("VERB", "AUX") \
-            and any(st.words[k].pos == "PRON" for k in st.children(at, "nsubj"))
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
@@ -683,7 +654,11 @@ class _Reader:
             one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
             stand_in = self.words[target] is None and one is not None and self.toks[one] == "one"
             out.attrs = self.attrs_before(one if stand_in else target)  # "Not the red mug, the blue one": blue
-            out.modifiers = self.compounds_before(target)
+            start = target  # the lemmas of the nouns that modify it from its left ("the bar seat": bar)
+            while start > 0 and self.word(start - 1).dep == "compound":
+                start -= 1
+            out.modifiers = frozenset(self.lemmas[k] for k in range(start, target)
+                                      if not any(s.start <= k < s.end for s in self.attr_at.values()))
         elif info.afford:  # "the seat nearest the radio", "something to brighten the hallway": what serves
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
         elif info.unknown_target:
@@ -700,4 +675,3 @@ def parse_query(text: str) -> SpatialQuery:
     """The spatial reading of `text` (no relations when it states none). Memoised and shared by
     retrieval's choice of experts, the gate and the spatial expert: no caller may change it."""
     return _Reader(text).read()
-

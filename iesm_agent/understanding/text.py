@@ -55,17 +55,6 @@ def stem(word: str) -> str:
     return w
 
 
-def _norm_surface(lex: Lexicon, words: list[str]) -> tuple[str, str]:
-    """(surface, base) of an attribute's words: hyphens and colour suffixes dropped, imitation
-    words ("look", "faux", "like") folded into one trailing "like", shades dropped from base."""
-    parts = [p for w in words for p in w.split("-") if p]
-    imitation = any(p in lex.words["imitation_suffixes"] for p in parts)
-    core = [p for p in parts if p not in lex.words["imitation_suffixes"] and p not in lex.words["color_suffixes"]]
-    base = [p for p in core if p not in lex.shades] or core
-    tail = ["like"] if imitation else []
-    return " ".join(core + tail), " ".join(base + tail)
-
-
 def modifier_spans(lex: Lexicon, lemmas: list[str], span: Span) -> list[Span]:
     """Attribute words inside a multi-word category phrase, as one-word spans: a modifier there
     is also a description ("mesh chair": mesh; "small table": small)."""
@@ -94,7 +83,12 @@ def read_slots(lex: Lexicon, lemmas: list[str], attr_spans: list[Span]) -> tuple
         for kind in sorted({k for s in group for k, _ in s.kinds if k in ATTRIBUTE_KINDS}):
             values = frozenset(v for s in group for k, v in s.kinds if k == kind)
             words = lemmas[start:end] if kind == "color" or len(group) == 1 else lemmas[group[0].start:group[0].end]
-            slots.append(Slot(kind, *_norm_surface(lex, words), values))
+            # hyphens and colour suffixes dropped, imitation words ("look", "faux", "like") folded into a last "like"
+            parts = [p for w in words for p in w.split("-") if p]
+            core = [p for p in parts if p not in suffixes]
+            tail = ["like"] if any(p in lex.words["imitation_suffixes"] for p in parts) else []
+            base = [p for p in core if p not in lex.shades] or core  # shades dropped
+            slots.append(Slot(kind, " ".join(core + tail), " ".join(base + tail), values))
     for i in range(len(lemmas) - 1):
         if (lemmas[i + 1] in lex.words["color_suffixes"] and i not in span_idx and i not in used
                 and lemmas[i].isalpha() and len(lemmas[i]) > 2 and lemmas[i] not in lex.shades):
