@@ -657,3 +657,28 @@ def test_a_class_noun_the_map_uses_as_a_label_prefers_that_label(tmp_path):
                                   box(3, "bucket", (1.3, 1.0, 0.15), (0.3, 0.3, 0.3))])
     assert analyse_query("the bucket under the table").generic is not None
     assert spatial(store, "the bucket under the table")[0] == 3
+
+
+# A cot against the north wall (y 2.0-4.0), a rug to its south; one cushion at each end of the cot.
+COT_ROOM = [
+    box(1, "bed", (2.0, 3.0, 0.3), (1.4, 2.0, 0.6)),
+    box(2, "pillow", (2.0, 3.7, 0.65), (0.5, 0.3, 0.15)),
+    box(3, "pillow", (2.3, 2.3, 0.65), (0.4, 0.4, 0.15)),
+    box(4, "rug", (2.0, 0.8, 0.01), (1.5, 1.0, 0.02)),
+]
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the cushion closest to the foot of the bed", 3),
+    ("the cushion nearest the head of the bed", 2),
+    ("the cushion furthest from the foot of the bed", 2),
+])
+def test_the_foot_or_head_of_a_landmark_is_its_end_away_from_or_against_the_wall(tmp_path, query, best):
+    store = make_store(tmp_path, COT_ROOM, name="cot")
+    assert spatial(store, query)[0] == best
+
+
+def test_a_wall_the_map_shows_says_where_the_head_is(tmp_path):
+    # the same cot with a wall drawn along its south end: that end is its head, whatever the room's extent
+    store = make_store(tmp_path, COT_ROOM + [box(5, "wall", (2.0, 1.95, 1.2), (3.0, 0.1, 2.4))], name="cot_wall")
+    assert spatial(store, "the cushion nearest the head of the bed")[0] == 3

@@ -55,6 +55,8 @@ _WALL_WORDS = {"wall", "walls"}
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
+#: the ends of a long thing that stands against a wall (a bed, a couch): the head is the end nearer a wall
+_ENDS = frozenset({"foot", "head"})
 #: verbs of seeing after which "from" says where the viewer is
 _SEEING = frozenset({"seen", "viewed", "looked", "watching"})  # with _LOOKING
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
@@ -90,7 +92,8 @@ class Relation:
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
     value: str = ""
     order: int = 0
-    landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of the landmark's instances
+    landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of the landmark's instances;
+    # "foot" / "head": which end of it
     negated: bool = False     # "the bowl that is not on the shelf"
 
 
@@ -352,6 +355,8 @@ class _Reader:
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
+            if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in _ENDS:
+                rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of it
         rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
         rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end

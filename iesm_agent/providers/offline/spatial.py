@@ -202,6 +202,27 @@ def _extent(scene: _Scene, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return scene.boxes.lo[same, :2].min(axis=0), scene.boxes.hi[same, :2].max(axis=0)
 
 
+def _end_of(scene: _Scene, rows: np.ndarray, end: str) -> geo.Boxes:
+    """One box per landmark row: the last 0.3 m of its length at its "head" (the end nearer a wall:
+    a wall the prompt shows, else the edge of the objects of its room) or its "foot" (the other end); ids -1."""
+    boxes = scene.boxes.take(rows)
+    walls = scene.boxes.take(np.array(["wall" in words for words in scene.label_words], bool))
+    room_lo, room_hi = _extent(scene, rows)
+    lo, hi = boxes.lo.copy(), boxes.hi.copy()
+    for k in range(len(rows)):
+        axis = int(np.argmax(hi[k, :2] - lo[k, :2]))  # along its length
+        depth = min(0.3, hi[k, axis] - lo[k, axis])
+        ends = [geo.Boxes(np.array([-1]), lo[k:k + 1].copy(), hi[k:k + 1].copy()) for _ in range(2)]
+        ends[0].hi[0, axis] = lo[k, axis] + depth  # the low end
+        ends[1].lo[0, axis] = hi[k, axis] - depth  # the high end
+        to_wall = [float(geo.xy_gap(e, walls).min()) for e in ends] if len(walls) else \
+            [lo[k, axis] - room_lo[axis], room_hi[axis] - hi[k, axis]]
+        head = int(to_wall[1] < to_wall[0])
+        chosen = ends[head if end == "head" else 1 - head]
+        lo[k], hi[k] = chosen.lo[0], chosen.hi[0]
+    return geo.Boxes(np.full(len(rows), -1), lo, hi)
+
+
 def _rank_score(values: np.ndarray) -> np.ndarray:
     """Higher value -> score near 1; ties share a score (dense ranks over distinct values)."""
     if len(values) < 2:
@@ -258,6 +279,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True))
         if not len(rows):
             return None
+        if rel.landmark_where in ("foot", "head"):
+            marks.append(_end_of(scene, rows, rel.landmark_where))
+            continue
         if rel.landmark_where:
             where = _relation_scores(Relation(rel.landmark_where), scene, rows, view)
             rows = rows[where >= where.max() - 1e-9]
