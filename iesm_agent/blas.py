@@ -23,20 +23,23 @@ _SETTERS = ("scipy_openblas_set_num_threads64_", "openblas_set_num_threads64_", 
 
 @lru_cache(maxsize=1)
 def one_blas_thread() -> bool:
-    """Hold numpy's OpenBLAS to one thread in this process; False when no OpenBLAS with a thread
-    setter is loaded (another BLAS, or no /proc). numpy's products give the same values on any
-    number of threads (a thread computes whole entries); only their CPU changes."""
-    import numpy  # noqa: F401 - loads its BLAS
+    """Hold numpy's OpenBLAS (the one its wheel ships, in `numpy.libs`) to one thread in this
+    process; False when there is none with a thread setter loaded (another BLAS, a system numpy,
+    no /proc). numpy's products give the same values on any number of threads (a thread computes
+    whole entries); only their CPU changes."""
+    import numpy
 
+    shipped = Path(numpy.__file__).resolve().parent.with_name("numpy.libs")
     try:
         maps = Path("/proc/self/maps").read_text()
     except OSError:
         return False
-    loaded = dict.fromkeys(line.split(None, 5)[5] for line in maps.splitlines()
-                           if line.count(" ") >= 5 and "openblas" in line.rsplit("/", 1)[-1])
-    for path in loaded:
+    loaded = dict.fromkeys(
+        Path(fields[5]) for fields in (line.split(None, 5) for line in maps.splitlines()) if len(fields) == 6
+    )  # (address, permissions, offset, device, inode, path)
+    for path in (p for p in loaded if p.parent == shipped and "openblas" in p.name):
         try:
-            library = ctypes.CDLL(path)
+            library = ctypes.CDLL(str(path))
         except OSError:
             continue
         for name in _SETTERS:

@@ -26,14 +26,19 @@ def test_the_reading_pipeline_multiplies_with_numpy_in_one_thread():
     layers = [layer for _, c in nlp.pipeline if getattr(c, "model", None) is not None for layer in c.model.walk()]
     assert layers and all(layer.ops.name == "numpy" and layer.ops.use_blis is False for layer in layers)
     threadpoolctl = pytest.importorskip("threadpoolctl")
-    assert {i["num_threads"] for i in threadpoolctl.threadpool_info() if i["internal_api"] == "openblas"} == {1}
+    numpy_blas = [i for i in threadpoolctl.threadpool_info() if "numpy.libs" in i["filepath"]]
+    assert numpy_blas and all(i["num_threads"] == 1 for i in numpy_blas)
 
 
 def test_it_parses_as_the_shipped_pipeline():
     import spacy
 
-    lines = [json.loads(line)["query"] for name in ("spatial_suite.jsonl", "apartment_human_suite.jsonl")
-             for line in (REPO / "evals" / name).read_text().splitlines() if line.strip()]
+    lines = [
+        json.loads(line)["query"]
+        for name in ("spatial_suite.jsonl", "apartment_human_suite.jsonl")
+        for line in (REPO / "evals" / name).read_text().splitlines()
+        if line.strip()
+    ]
     texts = [parse.normalise(t) for t in dict.fromkeys(lines)][:60]
     shipped = spacy.load(parse.PIPELINE, exclude=["ner"])
     nlp = parse._pipeline()
