@@ -25,8 +25,8 @@ _SETTERS = ("scipy_openblas_set_num_threads64_", "openblas_set_num_threads64_", 
 def one_blas_thread() -> bool:
     """Hold numpy's OpenBLAS (the one its wheel ships, in `numpy.libs`) to one thread in this
     process; False when there is none with a thread setter loaded (another BLAS, a system numpy,
-    no /proc). numpy's products give the same values on any number of threads (a thread computes
-    whole entries); only their CPU changes."""
+    no /proc). A matrix product gives the same values on any number of threads (each entry is one
+    thread's); only its CPU changes."""
     import numpy
 
     shipped = Path(numpy.__file__).resolve().parent.with_name("numpy.libs")
