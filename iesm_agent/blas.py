@@ -34,10 +34,9 @@ def one_blas_thread() -> bool:
         maps = Path("/proc/self/maps").read_text()
     except OSError:
         return False
-    loaded = dict.fromkeys(
-        Path(fields[5]) for fields in (line.split(None, 5) for line in maps.splitlines()) if len(fields) == 6
-    )  # (address, permissions, offset, device, inode, path)
-    for path in (p for p in loaded if p.parent == shipped and "openblas" in p.name):
+    # (address, permissions, offset, device, inode, path): the OpenBLAS libraries loaded
+    loaded = dict.fromkeys(Path(line.split(None, 5)[5]) for line in maps.splitlines() if "openblas" in line)
+    for path in (p for p in loaded if p.parent == shipped):
         try:
             library = ctypes.CDLL(str(path))
         except OSError:
