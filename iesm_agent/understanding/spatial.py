@@ -9,8 +9,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
-from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark, is_stranded,
-                      near_room)
+from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark,
+                      is_stranded, near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import NAMING, Word, normalise, parse_request
 from .query import analyse_query
@@ -55,8 +55,6 @@ _WALL_WORDS = {"wall", "walls"}
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
-#: the ends of a long thing that stands against a wall (a bed, a couch): the head is the end nearer a wall
-_ENDS = frozenset({"foot", "head"})
 #: verbs of seeing after which "from" says where the viewer is
 _SEEING = frozenset({"seen", "viewed", "looked", "watching"})  # with _LOOKING
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
@@ -92,8 +90,7 @@ class Relation:
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
     value: str = ""
     order: int = 0
-    landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of the landmark's instances;
-    # "foot" / "head": which end of it
+    landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of its instances; "foot" / "head": its end
     negated: bool = False     # "the bowl that is not on the shelf"
 
 
@@ -155,7 +152,8 @@ class _Reader:
         self.attr_words = {self.words[i] for s in self.attr_at.values() for i in range(s.start, s.end)}
         rooms = [s for s in spans if s.has("room") and not s.has("cat")]
         self.room_at = {s.end: tuple(("room", r) for r in s.values("room")) for s in rooms}
-        self.near_rooms = {s.start: s.end for s in rooms if near_room(toks, s.start, s.end, self.cat_at)}  # "nearest the den"
+        #: rooms a target is said to be near ("closest to the den", "the den side"): start -> end
+        self.near_rooms = {s.start: s.end for s in rooms if near_room(toks, s.start, s.end, self.cat_at)}
         #: token positions right after a colour, material or shape word ("glass [top]")
         self.part_described = {s.end for s in spans if any(k in ATTRIBUTE_KINDS and k != "size" for k, _ in s.kinds)}
         self.out = SpatialQuery()
@@ -355,8 +353,8 @@ class _Reader:
             end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
-            if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in _ENDS:
-                rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of it
+            if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in ("foot", "head"):
+                rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of its length
         rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
         rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end

@@ -287,7 +287,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             rows = rows[where >= where.max() - 1e-9]
         if not cats:  # a room ("the stool nearest the pantry"): one box around the objects shown in it
             room = boxes.take(rows)
-            marks.append(geo.Boxes(np.array([-1]), room.lo.min(axis=0, keepdims=True), room.hi.max(axis=0, keepdims=True)))
+            lo, hi = room.lo.min(axis=0, keepdims=True), room.hi.max(axis=0, keepdims=True)
+            marks.append(geo.Boxes(np.array([-1]), lo, hi))
             continue
         for size in (v for k, v in attrs if k == "size" and v in SIZE_EXTREMES):
             extreme = _relation_scores(Relation("extreme", value=SIZE_EXTREMES[size]), scene, rows, view)
