@@ -41,7 +41,7 @@ NEARNESS = frozenset({"near", "nearer", "nearest", "close", "closer", "closest",
 
 def near_room(words: list[str], start: int, end: int, named: Collection[int]) -> bool:
     """True when the room named by `words[start:end]` follows a word of nearness, past "to" or "from" ("the stool
-    closest to the pantry", "far from the study"), or names a side ("on the study side"; not a kind named from `end`,
+    closest to the garage", "far from the study"), or names a side ("on the study side"; not a kind named from `end`,
     one of the starts in `named`: "the study side table"): a place to be near, not the target's room."""
     k = start - 1
     while k >= 0 and words[k] in ("to", "from"):

@@ -361,7 +361,7 @@ class _Reader:
         return True
 
     def room_landmark(self, rel: Relation, pos: int) -> bool:
-        """A room said right after a word of nearness ("the stool closest to the pantry") as the
+        """A room said right after a word of nearness ("the stool closest to the garage") as the
         landmark of a relation of nearness: no category, the room's objects (`landmark_attrs`)."""
         start = next((j for j in self.near_rooms if pos <= j <= pos + 1), None)
         if start is None or rel.kind not in ("near", "closest", "farthest"):
