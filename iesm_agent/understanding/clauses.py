@@ -6,6 +6,7 @@ phrase ends) and the spatial reading (`spatial`: which noun is the landmark and 
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from collections.abc import Collection
 
 from ..lexicon import Span
@@ -49,6 +50,7 @@ def near_room(words: list[str], start: int, end: int, named: Collection[int]) ->
     return k >= 0 and words[k] in NEARNESS or words[end:end + 1] == ["side"] and end not in named
 
 
+@lru_cache(maxsize=4096)  # (asked at every stranded preposition and relation cue of a reading)
 def clause_final_words(text: str) -> frozenset[str]:
     """Lowercase words that end a clause of `text` (followed by punctuation, a dash or the end)."""
     return frozenset(m.group(1).lower() for m in _CLAUSE_END.finditer(text))

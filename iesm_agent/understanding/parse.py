@@ -38,7 +38,7 @@ _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", 
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
-#: prepositions that say where a thing is ("on the shelf", "next [to] the door")
+#: prepositions that say where a thing is ("on the hook", "next [to] the door")
 _PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to"})
 NOUNS = ("NOUN", "PROPN")
 #: shorthand people type, spelt out in this order: "its" before a determiner, the contraction typed
@@ -230,7 +230,7 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     names a target; else the first description ("This is a brown chair."), unless it only sets the
     scene ("There's a chest in the hall.") before a statement of what the speaker wants ("I want the
     pot on it"); else the last statement about the speaker that names one ("I want to dust the
-    frame"); never a sentence that continues an earlier one ("It is next to the desk.")."""
+    frame"); never a sentence that continues an earlier one ("It stands by the desk.")."""
     found = {wanted: [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
              for wanted in ("request", "description", "scene", "personal", "viewpoint")}
     said = sorted(found["description"] + found["scene"])
@@ -265,13 +265,13 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return ("request", shown) if shown is not None else ("viewpoint", found)
     if command is not None and command[1] is not None:  # "it's chilly, so lead me to a quilt"
         return "request", command[1]
-    # the noun the copula, or one joined to it, names ("this is a kettle", "it's on the shelf and is the jar";
+    # the noun the copula, or one joined to it, names ("this is a kettle", "it's on the sill and is the jar";
     # "this is the one without a lid": the stand-in, for its antecedent)
     named = next((c.i for verb in [root] + [c for c in root.children if c.dep_ == "conj"] if verb.lemma_ == "be"
                   for c in verb.children if c.dep_ == "attr" and (c.pos_ in NOUNS or c.lower_ in ("one", "ones"))),
                  None)
     if (pronoun or subject is not None and subject.lower_ in CONTINUATIONS or subject is None and first.pos_ == "AUX") \
-            and named is None:  # "It is by the desk.", "is next to" (a sentence cut short)
+            and named is None:  # "It is by the desk.", "is besi" (a sentence cut short)
         return "continuation", None
     if command is not None:
         return "request", None

@@ -212,7 +212,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
                    if tuple(tokens[i:i + len(words)]) == words), None)  # the first exclusion after the first word
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
-    if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the shelf.")
+    if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the sill.")
         end = min((k for k in clause_breaks(corrected, [(t, t.at) for t in tokens], SENTENCE_MARK) if k > marker[1]),
                   default=len(tokens))
         ruled_out.append(analyse_query(" ".join(tokens[marker[1]:end])))

@@ -378,15 +378,9 @@ class _Reader:
         end = span.end if span is not None else self.near_rooms[i]
         if self.toks[end:end + 1] != ["side"] or end in self.cat_at or i == self.target_at or i in self.used:
             return end
-        rel = Relation("closest")
+        rel, self.cue_word = Relation("closest"), None  # (no cue: the phrase at `i` is the landmark)
         self.out.relations.append(rel)
-        if span is None:
-            return end + self.room_landmark(rel, i)
-        self.used.add(i)
-        self.taken[rel] = [i]
-        rel.landmarks.append(tuple(span.values("cat")))
-        rel.landmark_attrs.append(self.attrs_before(i))
-        return end + 1
+        return end + (self.landmark(rel, i) if span is not None else self.room_landmark(rel, i))
 
     def read(self) -> SpatialQuery:
         """The relations of the query, then its target."""

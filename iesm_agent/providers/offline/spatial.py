@@ -285,7 +285,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         if rel.landmark_where:
             where = _relation_scores(Relation(rel.landmark_where), scene, rows, view)
             rows = rows[where >= where.max() - 1e-9]
-        if not cats:  # a room ("the stool nearest the pantry"): one box around the objects shown in it
+        if not cats:  # a room ("the stool nearest the garage"): one box around the objects shown in it
             room = boxes.take(rows)
             lo, hi = room.lo.min(axis=0, keepdims=True), room.hi.max(axis=0, keepdims=True)
             marks.append(geo.Boxes(np.array([-1]), lo, hi))
