@@ -60,6 +60,12 @@ def _target(text: str) -> str | None:
     ("I dropped my pen near the radiator. Walk me to the rack it leans on.", "rack"),  # a command opening a sentence
     ("walk to either of the stools by the counter, not the bar one in the den.", "stools"),  # no subject after it
     ("the stool is at the bench. is pres", "stool"),                          # a sentence cut short adds nothing
+    ("I'd like to read for a while, so any armchair in the den", "armchair"),  # a phrase after "so" names it again
+    ("I'm off to bed soon; the lamp by the bed", "lamp"),                     # or after a semicolon
+    ("I have to make a call; a chair in the study", "chair"),
+    ("Let me hang this jacket on the peg by the stairs.", "peg"),             # where a verb of placing puts its object
+    ("I want to set the tray down on top of the ottoman", "ottoman"),
+    ("Could you take me to whatever lays the tiles on the floor?", "tiles"),   # a thing that places: not its place
 ])
 def test_the_parse_names_the_target(text, target):
     assert _target(text) == target

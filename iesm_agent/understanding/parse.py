@@ -39,7 +39,9 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 #: prepositions that say where a thing is ("on the hook", "next [to] the door")
-_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to"})
+_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to", "onto", "into"})
+#: verbs that put their object somewhere ("hang my coat on the hook"): that place is where to go
+_PLACING_VERBS = frozenset({"put", "place", "set", "hang", "lay", "rest", "store", "stash", "drop", "prop", "stand"})
 NOUNS = ("NOUN", "PROPN")
 #: shorthand people type, spelt out in this order: "its" before a determiner, the contraction typed
 #: without its apostrophe ("its a chair"); "w/ a lid", "sofa + cushions"
@@ -305,12 +307,15 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
 
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
-    """(kind, target) of a sentence whose target is named again, with "that" or "this", after a comma
-    or a colon and hung on the root or the target ("the far end of the bench, that stool"): that noun."""
-    said = next((t.i for t in sent if t.dep_ in ("appos", "npadvmod") and t.pos_ in NOUNS
-                 and t.head.i in (sent.root.i, found) and any(
-                     c.dep_ == "det" and c.lower_ in ("that", "this") and c.i > sent.start
-                     and c.nbor(-1).text in (",", ":") for c in t.children)), None)
+    """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a
+    colon, hung on the root or the target ("the far end of the bench, that stool"), or as a phrase with no
+    verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"): that noun."""
+    said = next((t.i for t in sent if t.pos_ in NOUNS and (
+        t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
+            c.dep_ == "det" and c.lower_ in ("that", "this") and c.i > sent.start and c.nbor(-1).text in (",", ":")
+            for c in t.children)
+        or t.dep_ == "dep" and t.left_edge.i > sent.start and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
+        None)
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
 
 
@@ -320,10 +325,20 @@ def _where_kept(root) -> int | None:
     if not any(c.dep_ in ("nsubj", "dobj") and any(g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children)
                for c in root.children):
         return None
-    places = [p for h in (root, *root.children) for p in h.children if p.dep_ == "prep"
-              and p.lower_ in _PLACES and (h is root or h.dep_ in ("advmod", "acomp"))]
-    return next((k for p in sorted(places, key=lambda p: p.i) for g in p.children if g.dep_ == "pobj"
-                 and (k := _noun_of(g)) is not None), None)
+    return _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
+
+
+def _place_of(heads) -> int | None:
+    """The noun after the first place word on any of `heads` ("on the hook"; "on top of the cabinet": the
+    cabinet); None when there is none."""
+    for place in sorted((p for h in heads for p in h.children if p.dep_ == "prep" and p.lower_ in _PLACES),
+                        key=lambda p: p.i):
+        for obj in (g for g in place.children if g.dep_ == "pobj"):
+            if obj.lower_ in ("top", "front", "side", "back", "bottom"):
+                obj = next((g for o in obj.children if o.lower_ == "of" for g in o.children if g.dep_ == "pobj"), obj)
+            if (k := _noun_of(obj)) is not None:
+                return k
+    return None
 
 
 def _made(token) -> bool:
@@ -375,7 +390,12 @@ def _misread_verb(token) -> bool:
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition, or
-    the target of a clause it governs ("I want to dust the frame"); `clauses_only`: only the last."""
+    the target of a clause it governs ("I want to dust the frame"), where a verb of placing puts its
+    object, by the speaker ("let me set the tray on the stool": the stool); `clauses_only`: only the last."""
+    doer = next((c.lower_ for c in verb.children if c.dep_ == "nsubj"), "you")  # not "whatever puts files on paper"
+    if verb.lemma_ in _PLACING_VERBS and doer in _PERSONAL | {"you"} and any(c.dep_ == "dobj" for c in verb.children) \
+            and (placed := _place_of([verb])) is not None:
+        return placed
     for child in () if clauses_only else verb.children:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         found = _object_of(doc, child) if way else child.i if child.lower_ in ("one", "ones") else _noun_of(child)
