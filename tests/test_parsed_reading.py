@@ -163,6 +163,16 @@ def test_a_misspelt_plural_noun_is_read_through_its_singular(typed, meant):
     assert load_lexicon().correct(typed) == meant  # "matre" is a finish, not a thing: left as typed
 
 
+@pytest.mark.parametrize("word", ["carpeted", "blanketed", "bookish", "matted", "benched"])
+def test_a_known_word_with_a_suffix_is_a_word_of_its_own_not_a_typo(word):
+    assert load_lexicon().correct(word) == word
+
+
+@pytest.mark.parametrize("typed, meant", [("benchh", "bench"), ("rugg", "rug"), ("sofaa", "sofa")])
+def test_a_doubled_last_letter_is_still_a_typo(typed, meant):
+    assert load_lexicon().correct(typed) == meant
+
+
 @pytest.mark.parametrize("word", ["tea", "bin", "pic", "btw", "bbq"])
 def test_short_words_and_abbreviations_are_left_alone(word):
     assert load_lexicon().correct(word) == word

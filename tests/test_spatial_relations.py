@@ -382,6 +382,10 @@ def test_a_room_said_before_a_landmark_picks_the_landmark_in_that_room(tmp_path)
     # a place on a plan ("top left") and a described top ("a marble top") are not heights
     ("the stool in the top left corner", []),
     ("the marble top table", []),
+    # "high" or "low" beside "up" or "down": a height, said either way round
+    ("the jar kept high up in the pantry", ["high"]),
+    ("the crate stored down low by the stairs", ["low"]),
+    ("a high stool", []),
 ])
 def test_height_words(text, expected):
     assert _extremes(text) == expected

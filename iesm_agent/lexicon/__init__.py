@@ -122,6 +122,8 @@ class Lexicon:
         if hit is not None:
             return hit
         best = self._short_fix(token) if len(token) == 3 else self.closest(token, self._spelling_targets)
+        if best != token and _derived(token, best, self.vocab):
+            best = token  # "flowery", "charger", "stitched": a word made from a known one, not a typo
         if best == token and len(token) >= 5 and token.endswith("s"):
             one = self.correct(token[:-1])  # a misspelt plural ("tolets"): its singular, made plural
             if one != token[:-1] and any(kind in ("cat", "room") for kind, _ in self.phrases.get((one,), ())):
@@ -285,6 +287,23 @@ def _slip(typed: str, word: str) -> bool:
         return any(typed[:i] + typed[i + 1:] == word for i in range(len(typed)))
     return len(word) == len(typed) and any(
         typed[:i] + typed[i + 1] + typed[i] + typed[i + 2:] == word for i in range(len(typed) - 1))
+
+
+_SUFFIXES = ("y", "ey", "r", "er", "ed", "d", "ing", "ish", "est", "less", "ful")
+
+
+def _derived(token: str, fixed: str, vocab: frozenset[str]) -> bool:
+    """True when `token` is a known word with a suffix ("flowery", "buttoned") rather than a slip of
+    typing for `fixed`: `fixed` itself plus a suffix ("charger": charge + r; not "bedd"), or, when `fixed` is two
+    edits away, an English or lexicon word plus a suffix, its final e dropped or consonant doubled
+    ("plugged": plug, "stitched": stitch; not "dinning", one edit from dining)."""
+    from rapidfuzz.distance import OSA
+
+    if any(token == fixed + s and not fixed.endswith(s) for s in _SUFFIXES):  # "chairr": a letter doubled
+        return True
+    stems = {token[:-len(s)] for s in _SUFFIXES if token.endswith(s) and len(token) - len(s) >= 3}
+    stems |= {s + "e" for s in stems} | {s[:-1] for s in stems if len(s) > 3 and s[-1] == s[-2]}
+    return OSA.distance(token, fixed) >= 2 and any(s in _english() or s in vocab for s in stems)
 
 
 _OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short": "tall"}

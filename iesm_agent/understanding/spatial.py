@@ -394,8 +394,10 @@ class _Reader:
                 i += 1
             elif i in self.cat_at or i in self.near_rooms:  # never a cue ("first aid kit", "corner shelf")
                 i = self.named_side(i)
-            elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i):
-                out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS[toks[i]]))
+            elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i) or toks[i] in ("high", "low") \
+                    and {"up", "down"} & {toks[i - 1] if i else "", toks[i + 1] if i + 1 < len(toks) else ""}:
+                # ("the mug up high", "the one low down")
+                out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS.get(toks[i], toks[i])))
                 i += 1
             elif toks[i] in _ORDINALS:
                 self.pending_ordinal = Relation("ordinal", order=_ORDINALS[toks[i]], value="left")
