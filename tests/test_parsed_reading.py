@@ -138,6 +138,13 @@ def test_typed_shorthand_is_read_as_words():
     assert normalise("its handle is red") == "its handle is red"
 
 
+def test_a_described_stand_in_is_of_the_kind_named_before_it():
+    targets = analyse_query("I could use a clean saucepan; find me the shiny ones on the hob").targets
+    assert [c for c, w in targets.items() if w >= 1.0] == ["pot"]
+    assert analyse_query("I want a warm blanket: take me to the woollen ones").targets == {"blanket": 1.0}
+    assert analyse_query("take me to the woollen one").targets == {}  # no kind named: the attribute decides
+
+
 def test_misspelt_nouns_are_corrected_before_parsing():
     assert analyse_query("take me to the bookcsae in the study").targets == {"bookshelf": 1.0}
     assert _target("the wardorbe next to the bed") == "wardrobe"

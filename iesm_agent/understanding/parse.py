@@ -111,6 +111,7 @@ class Structure:
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
+    kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -216,7 +217,9 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
-    return Structure(words, target, phrase, request, context, leaving, text=text)
+    kind = next((t.i for t in reversed(doc[:target]) if t.pos_ in NOUNS and t.dep_ in NAMING), None) \
+        if target is not None and doc[target].lower_ in ("one", "ones") else None  # "I need a mug; the blue ones"
+    return Structure(words, target, phrase, request, context, leaving, text=text, kind=kind)
 
 
 def _wished_portion(token) -> bool:
