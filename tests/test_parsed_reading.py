@@ -170,7 +170,7 @@ def test_a_misspelt_plural_noun_is_read_through_its_singular(typed, meant):
     assert load_lexicon().correct(typed) == meant  # "matre" is a finish, not a thing: left as typed
 
 
-@pytest.mark.parametrize("word", ["carpeted", "blanketed", "bookish", "matted", "benched"])
+@pytest.mark.parametrize("word", ["carpeted", "blanketed", "bookish", "matted", "benched", "tiring", "bellies"])
 def test_a_known_word_with_a_suffix_is_a_word_of_its_own_not_a_typo(word):
     assert load_lexicon().correct(word) == word
 

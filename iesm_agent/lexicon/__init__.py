@@ -289,21 +289,24 @@ def _slip(typed: str, word: str) -> bool:
         typed[:i] + typed[i + 1] + typed[i] + typed[i + 2:] == word for i in range(len(typed) - 1))
 
 
-_SUFFIXES = ("y", "ey", "r", "er", "ed", "d", "ing", "ish", "est", "less", "ful")
+_SUFFIXES = ("y", "ey", "r", "er", "ed", "d", "ing", "ish", "est", "less", "ful", "s", "es")
 
 
 def _derived(token: str, fixed: str, vocab: frozenset[str]) -> bool:
     """True when `token` is a known word with a suffix ("flowery", "buttoned") rather than a slip of
     typing for `fixed`: `fixed` itself plus a suffix ("charger": charge + r; not "bedd"), or, when `fixed` is two
-    edits away, an English or lexicon word plus a suffix, its final e dropped or consonant doubled
-    ("plugged": plug, "stitched": stitch; not "dinning", one edit from dining)."""
+    edits away or starts with another letter, an English or lexicon word plus a suffix, its final e dropped,
+    consonant doubled or y made i ("plugged": plug, "tiring": tire, "bellies": belly; not "dinning", one edit
+    from dining)."""
     from rapidfuzz.distance import OSA
 
     if any(token == fixed + s and not fixed.endswith(s) for s in _SUFFIXES):  # "chairr": a letter doubled
         return True
     stems = {token[:-len(s)] for s in _SUFFIXES if token.endswith(s) and len(token) - len(s) >= 3}
-    stems |= {s + "e" for s in stems} | {s[:-1] for s in stems if len(s) > 3 and s[-1] == s[-2]}
-    return OSA.distance(token, fixed) >= 2 and any(s in _english() or s in vocab for s in stems)
+    stems |= {s + "e" for s in stems} | {s[:-1] for s in stems if len(s) > 3 and s[-1] == s[-2]} \
+        | {s[:-1] + "y" for s in stems if s.endswith("i")}
+    far = OSA.distance(token, fixed) >= 2 or token[0] != fixed[0]
+    return far and any(s in _english() or s in vocab for s in stems)
 
 
 _OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short": "tall"}
