@@ -27,8 +27,7 @@ RELATION_NOUNS = frozenset({"top", "bottom", "side", "left", "right", "front", "
 INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "below", "near": "near",
                     "left": "right", "right": "left", "front": "behind", "behind": "front", "opposite": "opposite"}
 
-#: words between a clause's noun and its preposition that are not verb forms ("is", "has been",
-#: "right above", "hung")
+#: words between a clause's noun and its preposition that are not verb forms ("is", "has been", "right above", "hung")
 _AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "has", "have", "had", "right", "just",
                           "directly", "usually", "always", "still", "now", "normally", "hung", "sat", "put", "set",
                           "kept", "lay", "laid", "stuck", "stood", "leant"})

@@ -86,28 +86,24 @@ def _pipeline():
 
 @dataclass(frozen=True)
 class Word:
-    """One parsed word: `start` is its character offset in the parsed text; `head` the index of
-    its syntactic head; `dep` its relation to it; `pos` its coarse part of speech."""
+    """One parsed word."""
 
     text: str
-    start: int
-    head: int
-    dep: str
-    pos: str
+    start: int  # its character offset in the parsed text
+    head: int  # the index of its syntactic head
+    dep: str  # its relation to the head
+    pos: str  # its coarse part of speech
 
 
 @dataclass(frozen=True)
 class Structure:
-    """What the parse says about a request. `target` is the word index of the target noun (None: the parse names none);
-    `phrase` the (first, last) word indices of its noun phrase (determiners excluded); `request` the character range of
-    the sentences that make the request (the target's sentence and the sentences that continue it); `context` the
-    character ranges of what only says why ("I spilled juice.")."""
+    """What the parse says about a request."""
 
     words: tuple[Word, ...]
-    target: int | None
-    phrase: tuple[int, int] | None
-    request: tuple[int, int]
-    context: tuple[tuple[int, int], ...]
+    target: int | None  # word index of the target noun (None: the parse names none)
+    phrase: tuple[int, int] | None  # (first, last) word indices of its noun phrase, determiners excluded
+    request: tuple[int, int]  # character range of the sentences that make the request: the target's and its sequels
+    context: tuple[tuple[int, int], ...]  # character ranges of what only says why ("I spilled juice.")
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
@@ -294,7 +290,10 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
                                   or doc[found].head.lemma_ in _ACTIVITY_VERBS or _made(doc[found])):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
-        found = _where_kept(root) if found is None else found
+        if found is None and any(c.dep_ in ("nsubj", "dobj") and any(
+                g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children) for c in root.children):
+            # where a thing of the speaker's is ("my glasses are on the bookcase", "I left my umbrella by the stairs")
+            found = _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
         return ("request" if question else "personal"), found
     dets = [t for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that") and t.head.pos_ in NOUNS]
     shown = next((t.head.i for t in dets if t.lower_ == "this" and t.head != subject), None)
@@ -320,15 +319,6 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
         or t.dep_ == "dep" and t.left_edge.i > sent.start and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
         None)
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
-
-
-def _where_kept(root) -> int | None:
-    """The place the speaker says a thing of theirs is ("my glasses are on the bookcase", "I left my umbrella by the
-    stairs"): the noun after the first place word on the verb; None when no thing of the speaker's is placed."""
-    if not any(c.dep_ in ("nsubj", "dobj") and any(g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children)
-               for c in root.children):
-        return None
-    return _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
 
 
 def _place_of(heads) -> int | None:

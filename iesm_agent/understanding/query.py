@@ -78,8 +78,7 @@ class QueryInfo:
     excluded_targets: frozenset[str] = frozenset()
     excluded_attrs: frozenset[tuple[str, str]] = frozenset()
 
-    def __post_init__(self) -> None:
-        """Freeze the containers too: the reading is shared by every caller of `analyse_query`."""
+    def __post_init__(self) -> None:  # freezes the containers too
         for f in fields(self):
             value = getattr(self, f.name)
             if isinstance(value, dict):
@@ -112,13 +111,12 @@ class _Token(str):
 
 @dataclass(frozen=True)
 class _Target:
-    """Where the target phrase lies among the request's lemmas: `start` (first word), `end`
-    (one past the head), `head` (the category span of the head noun, None when there is none)."""
+    """Where the target phrase lies among the request's lemmas."""
 
-    start: int
-    end: int
-    head: Span | None
-    word: int | None = None   # the parse's word index of the head noun
+    start: int  # its first word
+    end: int  # one past the head
+    head: Span | None  # the category span of the head noun (None: there is none)
+    word: int | None = None  # the parse's word index of the head noun
 
 
 def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span]) -> _Target | None:
@@ -160,9 +158,8 @@ def _ordered_target(lex: Lexicon, reading: _Reading, clause: set[int]) -> _Targe
     head = next((s for s in reversed(spans) if s.end <= end and set(s.values("cat")) - _UNSPECIFIC and not s.has("gen")
                  and not (set(lemmas[s.end:s.end + 1]) & abstract and any(k in ATTRIBUTE_KINDS for k, _ in s.kinds))),
                 None)
-    if head is None:
-        return _Target(0, end, None, reading.structure.target)
-    return _Target(0, end, head, reading.structure.index_at(reading.surface[head.end - 1].at))
+    word = reading.structure.target if head is None else reading.structure.index_at(reading.surface[head.end - 1].at)
+    return _Target(0, end, head, word)
 
 
 def _outside_target(structure: Structure, surface: list[_Token], span: Span, target: _Target,
@@ -179,9 +176,8 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if noun is None or noun == target.word:
         return False
     owner = structure.words[noun]
-    if owner.dep == "attr" or owner.start in described \
-            or owner.dep == "appos" and owner.head == target.word:  # "floor lamp, red shade": a part of it
-        return False  # "in brown leather": the material is the target's
+    if owner.dep == "attr" or owner.start in described or owner.dep == "appos" and owner.head == target.word:
+        return False  # "in brown leather": the material is the target's; "floor lamp, red shade": a part of it
     via = structure.words[owner.head].text.lower()
     return not (owner.dep == "pobj" and (via in _PART_WORDS or place_ok and via in _PLACE_PREPOSITIONS | {"at"}))
 
@@ -312,16 +308,15 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         if s is head or s.has("gen") and in_target:  # a class noun's words too: a label may say it ("bucket")
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
-        if s is head:
-            info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
-            attr_spans.extend(modifier_spans(lex, lemmas, s))
-            info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]
-                               for kind, v in lex.phrases.get((w,), ()) if kind == "room"})  # "bath towel"
-            continue
-        if s.has("gen") and in_target:
-            info.generic = s.values("gen")[0]
-            _add_entry(afford, lex.generic[info.generic], 1.0)
-            info.purpose = True
+            if s is head:
+                info.targets.update({c: 1.0 for c in s.values("cat") if c not in _UNSPECIFIC})
+                attr_spans.extend(modifier_spans(lex, lemmas, s))
+                info.rooms.update({v: info.rooms.get(v, 0.5) for w in lemmas[s.start:s.end]
+                                   for kind, v in lex.phrases.get((w,), ()) if kind == "room"})  # "bath towel"
+            else:
+                info.generic = s.values("gen")[0]
+                _add_entry(afford, lex.generic[info.generic], 1.0)
+                info.purpose = True
             continue
         if s.has("room") and not (in_target and s.has("cat")):
             if _outside_target(structure, surface, s, target, described, place_ok=True) \

@@ -50,7 +50,6 @@ _SIDES = frozenset({"left", "right", "front", "middle"})
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
-_WALL_WORDS = {"wall", "walls"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
@@ -60,8 +59,6 @@ _SEEING = frozenset({"seen", "viewed", "looked", "watching"})  # with _LOOKING
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
-#: parse relations of a noun that another word places or takes, so no target ("next to [the chair]")
-_LANDMARK_DEPS = frozenset({"pobj", "dobj"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
@@ -80,31 +77,28 @@ _USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "writ
 
 @dataclass(eq=False)  # one statement of one request, told apart by identity (`_Reader.taken`)
 class Relation:
-    """One relation: `kind` (a `_CUES` value, "extreme", "ordinal" or "in": on a part of the landmark, "on the top shelf
-    of the bookcase"), landmark categories (one tuple of canonical categories per landmark), `value` (extreme:
-    large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of the
-    target's kind, else the room's middle or a landmark's), `order` (1-based, -1 = last)."""
+    """One relation the request states of its target."""
 
-    kind: str
-    landmarks: list[tuple[str, ...]] = field(default_factory=list)
+    kind: str  # a `_CUES` value, "extreme", "ordinal" or "in" (on a part of the landmark: "the cupboard's top shelf")
+    landmarks: list[tuple[str, ...]] = field(default_factory=list)  # one tuple of canonical categories per landmark
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
+    #: extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of
+    #: the target's kind, else the room's middle or a landmark's
     value: str = ""
-    order: int = 0
+    order: int = 0  # ordinal: 1-based, -1 = last
     landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of its instances; "foot" / "head": its end
     negated: bool = False     # "the bowl that is not on the shelf"
 
 
 @dataclass
 class SpatialQuery:
-    """A referring expression: target categories (empty = unnamed), its colour/material words,
-    the relations and the viewpoint landmark ("facing the wardrobe")."""
+    """A referring expression: its target, the relations stated of it and where it is seen from."""
 
-    target: tuple[str, ...] = ()
-    attrs: tuple[tuple[str, str], ...] = ()
+    target: tuple[str, ...] = ()  # the target's categories (empty: unnamed)
+    attrs: tuple[tuple[str, str], ...] = ()  # its colour, material and size words
     relations: list[Relation] = field(default_factory=list)
-    facing: tuple[str, ...] = ()
-    #: where the viewer is ("viewed from the settee", "if I sit on the ottoman")
-    viewer_at: tuple[str, ...] = ()
+    facing: tuple[str, ...] = ()  # the viewpoint landmark ("facing the wardrobe")
+    viewer_at: tuple[str, ...] = ()  # where the viewer is ("viewed from the settee", "if I sit on the ottoman")
     unknown_target: bool = False  # the target is a noun the lexicon does not know ("the unicorn")
     named: bool = False           # the target kind is named ("the lamp"), not inferred from a function
     modifiers: frozenset[str] = frozenset()  # lemmas of nouns naming the target before it ("the bar seat")
@@ -127,8 +121,7 @@ def _side_words(kept: list[tuple[str, int]], text: str) -> list[tuple[str, int]]
 
 
 class _Reader:
-    """One pass over a query's tokens: cues become relations, the category phrases after them
-    their landmarks (`used` holds the starts of the category spans taken as landmarks)."""
+    """One pass over a query's tokens: cues become relations, the category phrases after them their landmarks."""
 
     def __init__(self, text: str):
         self.text = text
@@ -172,7 +165,7 @@ class _Reader:
         if self.target_at is None:
             named = {c for c, w in analyse_query(text).targets.items() if w >= 1.0}
             self.target_at = next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
-        self.used: set[int] = set() if self.target_at is None else {self.target_at}
+        self.used: set[int] = set() if self.target_at is None else {self.target_at}  # starts of the spans taken
         self.parts: set[int] = set()  # starts of the landmark spans that name a part of another landmark
 
     def word(self, i: int) -> Word:
@@ -236,9 +229,8 @@ class _Reader:
         """Attributes of the noun at `start`, read leftwards ("the green upper shelf", "cream-coloured",
         "the grey conference chair": past a noun that modifies it)."""
         found, end = [], start
-        suffixes = self.lex.words["color_suffixes"]
-        while end in self.attr_at or (end > 0 and (self.toks[end - 1] in _EXTREMES or self.toks[end - 1] in suffixes
-                                                   or self.word(end - 1).dep == "compound")):
+        passed = _EXTREMES.keys() | self.lex.words["color_suffixes"]  # "the tallest", "cream-coloured"
+        while end in self.attr_at or end > 0 and (self.toks[end - 1] in passed or self.word(end - 1).dep == "compound"):
             s = self.attr_at.get(end)  # an attribute ending here, else a word passed over
             found += [(k, v) for k, v in s.kinds if k in _LANDMARK_ATTRS] if s else []
             end = s.start if s else end - 1
@@ -250,10 +242,8 @@ class _Reader:
         below = self.cue_object()  # None: the parse gives the cue no noun, any span may serve
         found = [j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
                  and (below is None or below & self.span_words[j])]
-        if len(found) > 1 and below is not None:
-            objects = self.cue_objects()
-            found = [j for j in found if objects & self.span_words[j]] + found
-        return found[0] if found else None
+        objects = self.cue_objects() if below is not None else set()
+        return next((j for j in found if objects & self.span_words[j]), found[0] if found else None)
 
     def cue_objects(self) -> set[int]:
         """Parsed words that are the current cue's own objects: its noun objects, those of its
@@ -466,7 +456,7 @@ class _Reader:
         if kind != "facing" and len(words) == 1 and self.word(i - 1).pos in ("VERB", "AUX") and any(
                 st.words[k].pos == "PRON" for k in st.children(self.words[i - 1], "nsubj")):
             return i  # "the mug I left there": a verb with a pronoun subject (not just tagged a verb: "..., left jar")
-        if kind in ("on", "wall") and nxt in _WALL_WORDS:
+        if kind in ("on", "wall") and nxt in ("wall", "walls"):
             out.relations.append(Relation("wall"))
             return i + 1
         if kind == "from":
@@ -501,7 +491,7 @@ class _Reader:
         if comma >= 0 and self.offsets[at] < comma:
             after = next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
                           and self.words[j] is not None
-                          and st.words[self.noun_of(self.words[j])].dep not in _LANDMARK_DEPS), None)
+                          and st.words[self.noun_of(self.words[j])].dep not in ("pobj", "dobj")), None)
             if after is not None:
                 self.out.facing, self.target_at = tuple(self.cat_at[at].values("cat")), after
                 self.used.add(after)
@@ -603,11 +593,10 @@ class _Reader:
                     or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
                 self.landmark(rel, i)  # "left of my bed", "behind a sofa"
         elif kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
-            if self.landmark(rel, i):
-                frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
-                self.cue_word = None if frm is None else self.words[frm]
-                if frm is not None and self.landmark(rel, frm):
-                    i = self.last_landmark_end
+            frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
+            if self.landmark(rel, i) and frm is not None:
+                self.cue_word = self.words[frm]
+                i = self.last_landmark_end if self.landmark(rel, frm) else i
         elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
