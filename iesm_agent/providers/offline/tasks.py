@@ -490,24 +490,58 @@ def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
 @lru_cache(maxsize=512)
 def _concept_fits(block: _Block, targets: tuple[tuple[str, float], ...], afford: tuple[tuple[str, float], ...],
                   kin: tuple[tuple[str, float], ...]) -> np.ndarray:
-    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for,
-    to the functions it asks for and to their functional kin (`_concept_fit`). Memoised by the
-    block and the three weightings: queries asking for the same things score a map's categories
-    once ("the recliner in the den" and "the grey recliner" alike)."""
-    lex = load_lexicon()
-    targets_, afford_, kin_ = dict(targets), dict(afford), dict(kin)
-    fits = np.array([_concept_fit(lex, targets_, afford_, kin_, cc) for cc in block.concepts],
-                    dtype=np.float64).reshape(-1, 3)
+    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for
+    (the best weight x `concept_sim`, 0 when none is asked), to the functions it asks for and to
+    their functional kin (`_kind_fit`). Memoised by the block and the three weightings: queries
+    asking for the same things score a map's categories once ("the recliner in the den" and "the
+    grey recliner" alike); a category asked for is compared with the block's once (`_sims_to`)."""
+    fits = np.zeros((len(block.concepts), 3), dtype=np.float64)
+    if targets:
+        fits[:, 0] = np.max([wq * _sims_to(block, qc) for qc, wq in targets], axis=0)
+    fits[:, 1] = _kind_fit(block, afford)
+    fits[:, 2] = _kind_fit(block, kin)
     fits.flags.writeable = False
     return fits
 
 
-def _concept_fit(lex, targets: dict[str, float], afford: dict[str, float], kin: dict[str, float],
-                 cc: str) -> tuple[float, float, float]:
-    """(category fit, function fit, functional-kin fit) of one candidate category for a query
-    asking for `targets`, `afford` and `kin` (category or function -> weight)."""
-    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in targets.items()), default=0.0)
-    return label, _by_kind(lex, afford, cc), _by_kind(lex, kin, cc)
+@lru_cache(maxsize=4096)
+def _sims_to(block: _Block, asked: str) -> np.ndarray:
+    """(C,) read-only: `concept_sim(asked, c)` for each category c of `block`."""
+    lex = load_lexicon()
+    sims = np.array([lex.concept_sim(asked, cc) for cc in block.concepts], dtype=np.float64)
+    sims.flags.writeable = False
+    return sims
+
+
+def _kind_fit(block: _Block, weights: tuple[tuple[str, float], ...]) -> np.ndarray | float:
+    """Per category of `block`, `_by_kind` of `weights` (category -> weight): from the categories
+    each listed kind is, or is an ancestor of (`_kinds_in`), not from every category's ancestors."""
+    if not weights:
+        return 0.0
+    if not all(w > 0.0 for _, w in weights):  # (the max below starts from 0: positive weights only)
+        lex, asked = load_lexicon(), dict(weights)
+        return np.array([_by_kind(lex, asked, cc) for cc in block.concepts], dtype=np.float64)
+    fit = np.zeros(len(block.concepts), dtype=np.float64)
+    kinds = _kinds_in(block)
+    for kind, w in weights:
+        rows = kinds.get(kind)
+        if rows is not None:
+            fit[rows[0]] = np.maximum(fit[rows[0]], w)
+            fit[rows[1]] = np.maximum(fit[rows[1]], 0.8 * w)
+    return fit
+
+
+@lru_cache(maxsize=64)
+def _kinds_in(block: _Block) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Kind -> (rows of `block.concepts` that are that kind, rows that descend from it)."""
+    lex = load_lexicon()
+    rows: dict[str, tuple[list[int], list[int]]] = {}
+    for row, cc in enumerate(block.concepts):
+        rows.setdefault(cc, ([], []))[0].append(row)
+        for parent in lex.ancestors.get(cc, ()):
+            rows.setdefault(parent, ([], []))[1].append(row)
+    return {kind: (np.array(same, dtype=np.int64), np.array(below, dtype=np.int64))
+            for kind, (same, below) in rows.items()}
 
 
 def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
@@ -567,8 +601,8 @@ def _with_uses(q: QueryInfo, comp: np.ndarray, encoder, block: _Block) -> np.nda
     uses = _nearest_uses(encoder, q.text)
     if not uses or not len(block.pair_row):
         return comp
-    lex = load_lexicon()
-    fits = np.array([[_by_kind(lex, uses, cc)] for cc in block.concepts], dtype=np.float64)
+    fits = np.zeros((len(block.concepts), 1), dtype=np.float64)
+    fits[:, 0] = _kind_fit(block, tuple(uses.items()))
     out = comp.copy()
     out[:, [_USE]] = _best_over_labels(block, fits)
     out.flags.writeable = False
