@@ -85,6 +85,14 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
     return score, ", ".join(top)
 
 
+@lru_cache(maxsize=256)
+def _description_words(description: str) -> frozenset[str]:
+    """Lemmas of a plug-in expert's gate description (the same for every query: about 50 us for
+    the spatial expert's, which the gate scores as a plug-in before `spatial.weigh` decides)."""
+    lex = load_lexicon()
+    return frozenset(lex.lemma(t) for t in lex.tokens(description))
+
+
 def _unknown_words(q: QueryInfo) -> frozenset[str]:
     """Lowercase words of the query's unknown target and room phrases."""
     return frozenset(" ".join(filter(None, (q.unknown_target, q.unknown_room))).lower().split())
@@ -101,7 +109,7 @@ def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
     """An unknown expert scores by the overlap of its description with the query's words
     (2 per shared word or attribute kind, at most 4)."""
     lex = load_lexicon()
-    desc_words = {lex.lemma(t) for t in lex.tokens(description)}
+    desc_words = _description_words(description)
     query_words = {lex.lemma(t) for t in lex.tokens(q.text)} - lex.words["skip"] - _PLUGIN_STOP
     kinds = {k for k, _ in q.attrs}
     hits = sorted(query_words & desc_words) + sorted(k for k in kinds if k in desc_words)
@@ -188,7 +196,7 @@ def _tiers(fit: np.ndarray, min_best: float) -> np.ndarray:
     best = float(fit.max()) if len(fit) else 0.0
     if best < min_best or best <= 0.0:
         return np.zeros(len(fit))
-    return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0))
+    return (fit > 0.0).astype(np.float64) + (fit >= _TIER_SHARE * best)  # (the second implies the first)
 
 
 def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
@@ -213,9 +221,17 @@ def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarra
     return (tier >= 1) | (comp[:, _KIN] > 0)
 
 
+#: each role's weights of the components (a constant: building the array took about 1 us a call)
+_ALL_WEIGHTS = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
+_OBJ_WEIGHTS = {lexical: np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0]) for lexical in (True, False)}
+_DESC_WEIGHTS = np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0])
+for _weights in (_ALL_WEIGHTS, _OBJ_WEIGHTS[True], _OBJ_WEIGHTS[False], _DESC_WEIGHTS):
+    _weights.flags.writeable = False
+
+
 def _score_all(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
     """No focus (single pass): the asked-for kind first, then all evidence together."""
-    weights = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
+    weights = _ALL_WEIGHTS.copy()
     if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
         weights[_TEXT], weights[_EMB] = 0.5, 1.0
     tier = _kind_tier(q, comp)
@@ -230,7 +246,7 @@ def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
     that kind; never the function asked for, which is the abstract expert's evidence); the other
     evidence (room, appearance, text, function) only orders candidates of the same tier."""
     tier = _label_tier(comp)
-    evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0])
+    evidence = comp @ _OBJ_WEIGHTS[lexical]
     return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
 
 
@@ -258,7 +274,7 @@ def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarr
     tier = _kind_tier(q, comp)
     desc = comp[:, _DESC] + 0.5 * comp[:, _TEXT] + 0.5 * comp[:, _EMB]
     score = _SECOND * desc + 3.0 * tier + comp[:, _LABEL]
-    return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0]) > 1e-9) | (tier >= 2)
+    return score, (comp @ _DESC_WEIGHTS > 1e-9) | (tier >= 2)
 
 
 def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
