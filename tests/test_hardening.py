@@ -586,3 +586,15 @@ def test_an_allowed_host_may_name_its_own_port():
     assert check._validate_host("proxy.example:8443") and check._validate_host("lab.example:8000")
     assert check._validate_host("lab.example") and check._validate_host("[::1]:8000")
     assert not check._validate_host("proxy.example:8000") and not check._validate_host("lab.example:8443")
+
+
+def test_the_sandbox_gives_each_template_the_library_globals_as_one_dict(lib):
+    """`prompting._sandbox`: a template's globals are one dict (Jinja's `ChainMap` is iterated in
+    Python on every render) holding the library's globals; the environment is still the sandbox."""
+    from jinja2.sandbox import SandboxedEnvironment
+
+    from iesm_agent import contract
+
+    template = lib._env.get_template("expert.j2")
+    assert isinstance(lib._env, SandboxedEnvironment) and type(template.globals) is dict
+    assert template.globals["task_line"] is contract.task_line and template.globals["range"] is lib._env.globals["range"]

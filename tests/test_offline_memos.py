@@ -26,7 +26,8 @@ QUERIES = ["the grey sofa in the living room", "somewhere to sleep", "the lamp n
 
 def _forget_everything() -> None:
     for memoised in (prompt._block_lines, prompt.focus_role, tasks._parse_candidates,
-                     tasks._concept_fits, spatial._scene_of, spatial._of_kind):
+                     tasks._concept_fits, tasks._sims_to, tasks._kinds_in, spatial._scene_of, spatial._of_kind,
+                     spatial._concept_pairs, spatial._scene_concepts, spatial._fits_to):
         memoised.cache_clear()
     with tasks._MEMOS_LOCK:
         tasks._MEMOS.clear()
@@ -102,3 +103,31 @@ def test_a_block_is_read_once_and_its_category_fits_are_shared_by_queries_asking
     assert blocks.currsize == 2 and blocks.hits >= len(prompts) - len(QUERIES) - 2
     fits = tasks._concept_fits.cache_info()
     assert fits.hits >= 1 and fits.misses < len(QUERIES)  # the two sofas ask for the same kinds
+
+
+def test_category_fits_equal_the_per_category_loop(prompts):
+    """`_concept_fits` (each asked category against the block's once, kinds from the categories
+    they are or are ancestors of) equals the loop over every category of the block; so does the
+    spatial expert's fit of each instance to a kind, by distinct category or per instance."""
+    from iesm_agent.lexicon import load_lexicon
+
+    lex = load_lexicon()
+    readings = [prompt.read_prompt(m) for m in prompts]
+    blocks = {id(b): b for b in (tasks._parse_candidates(r.candidate_lines) for r in readings)}.values()
+    asked = [analyse_query(q) for q in QUERIES + ["a chair or a stool", "where do I put my coat"]]
+    weightings = [(tasks._weights_key(q.targets), tasks._weights_key(q.afford), tasks._weights_key(q.kin))
+                  for q in asked] + [((), (("seat", 0.0), ("table", 0.5)), (("chair", 1.0), ("furniture", 0.7)))]
+    for block in blocks:
+        for targets, afford, kin in weightings:
+            loop = np.array([(max((w * lex.concept_sim(c, cc) for c, w in targets), default=0.0),
+                              tasks._by_kind(lex, dict(afford), cc), tasks._by_kind(lex, dict(kin), cc))
+                             for cc in block.concepts], dtype=np.float64).reshape(-1, 3)
+            assert np.array_equal(tasks._concept_fits(block, targets, afford, kin), loop)
+    scenes = [spatial._read_scene(r) for r in readings if r.task == "rank-geometry"]
+    assert scenes
+    kinds = sorted({c for s in scenes for concepts in s.concepts for c, _ in concepts} | set(lex.generic))
+    for scene in scenes[:1]:
+        for cats in [(k,) for k in kinds] + [("chair", "seat"), ()]:
+            loop = np.array([max((w * max(lex.concept_sim(q, c), spatial._member(lex, q, c))
+                                  for c, w in concepts for q in cats), default=0.0) for concepts in scene.concepts])
+            assert np.array_equal(spatial._fit_to(scene, cats), loop)

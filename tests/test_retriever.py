@@ -312,3 +312,15 @@ def test_candidate_pick_keeps_what_the_query_implies_by_function():
     assert picked.considered == 131
     plain = select_candidates(store, "a chair", analyse_query("a chair"), 100, target=500)
     assert plain.recall is False and len(plain.ids) == 100
+
+
+def test_the_experts_not_chosen_keep_their_order_and_are_found_by_identity():
+    """`mtefr._others`: the specs outside a selection made from them, in order (found by identity,
+    not by comparing the pydantic models field by field)."""
+    from iesm_agent.retrieval.experts import load_experts
+    from iesm_agent.retrieval.mtefr import _others
+
+    specs = list(load_experts([]).values())
+    chosen = specs[1::2]
+    assert _others(specs, chosen) == [s for s in specs if s not in chosen] == specs[0::2]
+    assert _others(specs, []) == specs and _others(specs, specs) == []

@@ -61,7 +61,14 @@ def asked_experts(specs: Sequence[ExpertSpec], query: str) -> tuple[list[ExpertS
     if not any(set(s.fields) & set(GEOMETRY_FIELDS) for s in specs) or parse_query(query).relations:
         return list(specs), []
     asked = [s for s in specs if not set(s.fields) & set(GEOMETRY_FIELDS)]
-    return asked, [s for s in specs if s not in asked]
+    return asked, _others(specs, asked)
+
+
+def _others(specs: Sequence[ExpertSpec], chosen: Sequence[ExpertSpec]) -> list[ExpertSpec]:
+    """The specs not in `chosen` (a selection from `specs`), found by identity: `not in` compared
+    the pydantic models field by field, about 4 us a pair (40 us a query)."""
+    taken = {id(s) for s in chosen}
+    return [s for s in specs if id(s) not in taken]
 
 
 def _weighted(session: Session, specs: Sequence[ExpertSpec], weights: dict[str, float],
@@ -72,7 +79,7 @@ def _weighted(session: Session, specs: Sequence[ExpertSpec], weights: dict[str, 
     active = [s for s in specs if (weights[s.name] > 0 if floor is None else weights[s.name] >= floor)]
     if len(active) < len(specs):
         session.notes.append(f"not asked, gate weight {'0' if floor is None else f'under {floor:.2f}'}: "
-                             + ", ".join(s.name for s in specs if s not in active))
+                             + ", ".join(s.name for s in _others(specs, active)))
     return active
 
 
@@ -128,7 +135,7 @@ async def run_mtefr(session: Session, query: str, specs: Sequence[ExpertSpec], c
                 abstentions[spec.name] = abstain_reason(reply.text or "") or "no ranking"
 
     read(active, replies)
-    rest = [s for s in specs if s not in active]
+    rest = _others(specs, active)
     if rest and not any(weights[name] > 0 for name in rankings):
         session.notes.append("no expert with gate weight returned a ranking: " + ", ".join(s.name for s in rest)
                              + " asked after all")

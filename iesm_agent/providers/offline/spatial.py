@@ -130,8 +130,7 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     Memoised by the scene and what is asked: the queries on one map name the same target and
     landmark kinds again and again (about 50 us per scene of 100 instances)."""
     lex = load_lexicon()
-    fit = np.array([max((w * max(lex.concept_sim(q, c), _member(lex, q, c)) for c, w in concepts for q in cats),
-                        default=0.0) for concepts in scene.concepts])
+    fit = _fit_to(scene, cats)
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6 if cats else np.ones(len(fit), bool)
     if landmark and cats and not (fit >= 0.9).any():
         said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
@@ -148,6 +147,50 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
             kind = kind & (fit >= best - 1e-9)
     kind.flags.writeable = False
     return kind
+
+
+def _fit_to(scene: _Scene, cats: tuple[str, ...]) -> np.ndarray:
+    """(N,) per instance of `scene`, the best weight x fit of its label's categories to one of
+    `cats` (`concept_sim` or `_member`, the higher; 0 for a label without categories): each of the
+    scene's distinct categories compared with each kind once (`_fits_to`), not once per instance."""
+    pairs = _concept_pairs(scene)
+    if pairs is None:  # a weight not above 0 (the max below starts from 0): per instance
+        lex = load_lexicon()
+        return np.array([max((w * max(lex.concept_sim(q, c), _member(lex, q, c)) for c, w in concepts for q in cats),
+                             default=0.0) for concepts in scene.concepts])
+    rows, index, weights = pairs
+    fit = np.zeros(len(scene.concepts))
+    for q in cats:
+        np.maximum.at(fit, rows, weights * _fits_to(scene, q)[index])
+    return fit
+
+
+@lru_cache(maxsize=64)
+def _concept_pairs(scene: _Scene) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """(row, index into `_scene_concepts`, weight) of each category of each instance's label;
+    None when a weight is not above 0."""
+    distinct = {c: k for k, c in enumerate(_scene_concepts(scene))}
+    pairs = [(row, distinct[c], w) for row, concepts in enumerate(scene.concepts) for c, w in concepts]
+    if not all(w > 0.0 for _, _, w in pairs):
+        return None
+    return (np.array([p[0] for p in pairs], np.int64), np.array([p[1] for p in pairs], np.int64),
+            np.array([p[2] for p in pairs], np.float64))
+
+
+@lru_cache(maxsize=64)
+def _scene_concepts(scene: _Scene) -> tuple[str, ...]:
+    """The distinct categories of the scene's labels, in order of first appearance."""
+    return tuple(dict.fromkeys(c for concepts in scene.concepts for c, _ in concepts))
+
+
+@lru_cache(maxsize=4096)
+def _fits_to(scene: _Scene, kind: str) -> np.ndarray:
+    """(C,) read-only: how well each of the scene's distinct categories answers `kind`."""
+    lex = load_lexicon()
+    fits = np.array([max(lex.concept_sim(kind, c), _member(lex, kind, c)) for c in _scene_concepts(scene)],
+                    dtype=np.float64)
+    fits.flags.writeable = False
+    return fits
 
 
 @lru_cache(maxsize=1024)

@@ -85,6 +85,14 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
     return score, ", ".join(top)
 
 
+@lru_cache(maxsize=256)
+def _description_words(description: str) -> frozenset[str]:
+    """Lemmas of a plug-in expert's gate description (the same for every query: about 50 us for
+    the spatial expert's, which the gate scores as a plug-in before `spatial.weigh` decides)."""
+    lex = load_lexicon()
+    return frozenset(lex.lemma(t) for t in lex.tokens(description))
+
+
 def _unknown_words(q: QueryInfo) -> frozenset[str]:
     """Lowercase words of the query's unknown target and room phrases."""
     return frozenset(" ".join(filter(None, (q.unknown_target, q.unknown_room))).lower().split())
@@ -101,7 +109,7 @@ def _plugin_score(q: QueryInfo, description: str) -> tuple[int, str]:
     """An unknown expert scores by the overlap of its description with the query's words
     (2 per shared word or attribute kind, at most 4)."""
     lex = load_lexicon()
-    desc_words = {lex.lemma(t) for t in lex.tokens(description)}
+    desc_words = _description_words(description)
     query_words = {lex.lemma(t) for t in lex.tokens(q.text)} - lex.words["skip"] - _PLUGIN_STOP
     kinds = {k for k, _ in q.attrs}
     hits = sorted(query_words & desc_words) + sorted(k for k in kinds if k in desc_words)
@@ -188,7 +196,7 @@ def _tiers(fit: np.ndarray, min_best: float) -> np.ndarray:
     best = float(fit.max()) if len(fit) else 0.0
     if best < min_best or best <= 0.0:
         return np.zeros(len(fit))
-    return np.where(fit >= _TIER_SHARE * best, 2.0, np.where(fit > 0.0, 1.0, 0.0))
+    return (fit > 0.0).astype(np.float64) + (fit >= _TIER_SHARE * best)  # (the second implies the first)
 
 
 def _kind_tier(q: QueryInfo, comp: np.ndarray) -> np.ndarray:
@@ -213,9 +221,17 @@ def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarra
     return (tier >= 1) | (comp[:, _KIN] > 0)
 
 
+#: each role's weights of the components (a constant: building the array took about 1 us a call)
+_ALL_WEIGHTS = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
+_OBJ_WEIGHTS = {lexical: np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0]) for lexical in (True, False)}
+_DESC_WEIGHTS = np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0])
+for _weights in (_ALL_WEIGHTS, _OBJ_WEIGHTS[True], _OBJ_WEIGHTS[False], _DESC_WEIGHTS):
+    _weights.flags.writeable = False
+
+
 def _score_all(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
     """No focus (single pass): the asked-for kind first, then all evidence together."""
-    weights = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
+    weights = _ALL_WEIGHTS.copy()
     if not lexical:  # nothing lexical to go on: lean on text overlap and embeddings
         weights[_TEXT], weights[_EMB] = 0.5, 1.0
     tier = _kind_tier(q, comp)
@@ -230,7 +246,7 @@ def _score_obj(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarra
     that kind; never the function asked for, which is the abstract expert's evidence); the other
     evidence (room, appearance, text, function) only orders candidates of the same tier."""
     tier = _label_tier(comp)
-    evidence = comp @ np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0])
+    evidence = comp @ _OBJ_WEIGHTS[lexical]
     return _SECOND * tier + evidence, (evidence > 1e-9) | (tier >= 2)
 
 
@@ -258,7 +274,7 @@ def _score_desc(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarr
     tier = _kind_tier(q, comp)
     desc = comp[:, _DESC] + 0.5 * comp[:, _TEXT] + 0.5 * comp[:, _EMB]
     score = _SECOND * desc + 3.0 * tier + comp[:, _LABEL]
-    return score, (comp @ np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0]) > 1e-9) | (tier >= 2)
+    return score, (comp @ _DESC_WEIGHTS > 1e-9) | (tier >= 2)
 
 
 def _score_abs(q: QueryInfo, comp: np.ndarray, lexical: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -490,24 +506,58 @@ def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
 @lru_cache(maxsize=512)
 def _concept_fits(block: _Block, targets: tuple[tuple[str, float], ...], afford: tuple[tuple[str, float], ...],
                   kin: tuple[tuple[str, float], ...]) -> np.ndarray:
-    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for,
-    to the functions it asks for and to their functional kin (`_concept_fit`). Memoised by the
-    block and the three weightings: queries asking for the same things score a map's categories
-    once ("the recliner in the den" and "the grey recliner" alike)."""
-    lex = load_lexicon()
-    targets_, afford_, kin_ = dict(targets), dict(afford), dict(kin)
-    fits = np.array([_concept_fit(lex, targets_, afford_, kin_, cc) for cc in block.concepts],
-                    dtype=np.float64).reshape(-1, 3)
+    """(C, 3) read-only: per category of `block`, its fit to the categories the query asks for
+    (the best weight x `concept_sim`, 0 when none is asked), to the functions it asks for and to
+    their functional kin (`_kind_fit`). Memoised by the block and the three weightings: queries
+    asking for the same things score a map's categories once ("the recliner in the den" and "the
+    grey recliner" alike); a category asked for is compared with the block's once (`_sims_to`)."""
+    fits = np.zeros((len(block.concepts), 3), dtype=np.float64)
+    if targets:
+        fits[:, 0] = np.max([wq * _sims_to(block, qc) for qc, wq in targets], axis=0)
+    fits[:, 1] = _kind_fit(block, afford)
+    fits[:, 2] = _kind_fit(block, kin)
     fits.flags.writeable = False
     return fits
 
 
-def _concept_fit(lex, targets: dict[str, float], afford: dict[str, float], kin: dict[str, float],
-                 cc: str) -> tuple[float, float, float]:
-    """(category fit, function fit, functional-kin fit) of one candidate category for a query
-    asking for `targets`, `afford` and `kin` (category or function -> weight)."""
-    label = max((wq * lex.concept_sim(qc, cc) for qc, wq in targets.items()), default=0.0)
-    return label, _by_kind(lex, afford, cc), _by_kind(lex, kin, cc)
+@lru_cache(maxsize=4096)
+def _sims_to(block: _Block, asked: str) -> np.ndarray:
+    """(C,) read-only: `concept_sim(asked, c)` for each category c of `block`."""
+    lex = load_lexicon()
+    sims = np.array([lex.concept_sim(asked, cc) for cc in block.concepts], dtype=np.float64)
+    sims.flags.writeable = False
+    return sims
+
+
+def _kind_fit(block: _Block, weights: tuple[tuple[str, float], ...]) -> np.ndarray | float:
+    """Per category of `block`, `_by_kind` of `weights` (category -> weight): from the categories
+    each listed kind is, or is an ancestor of (`_kinds_in`), not from every category's ancestors."""
+    if not weights:
+        return 0.0
+    if not all(w > 0.0 for _, w in weights):  # (the max below starts from 0: positive weights only)
+        lex, asked = load_lexicon(), dict(weights)
+        return np.array([_by_kind(lex, asked, cc) for cc in block.concepts], dtype=np.float64)
+    fit = np.zeros(len(block.concepts), dtype=np.float64)
+    kinds = _kinds_in(block)
+    for kind, w in weights:
+        rows = kinds.get(kind)
+        if rows is not None:
+            fit[rows[0]] = np.maximum(fit[rows[0]], w)
+            fit[rows[1]] = np.maximum(fit[rows[1]], 0.8 * w)
+    return fit
+
+
+@lru_cache(maxsize=64)
+def _kinds_in(block: _Block) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Kind -> (rows of `block.concepts` that are that kind, rows that descend from it)."""
+    lex = load_lexicon()
+    rows: dict[str, tuple[list[int], list[int]]] = {}
+    for row, cc in enumerate(block.concepts):
+        rows.setdefault(cc, ([], []))[0].append(row)
+        for parent in lex.ancestors.get(cc, ()):
+            rows.setdefault(parent, ([], []))[1].append(row)
+    return {kind: (np.array(same, dtype=np.int64), np.array(below, dtype=np.int64))
+            for kind, (same, below) in rows.items()}
 
 
 def _by_kind(lex, weights: dict[str, float], cc: str) -> float:
@@ -567,8 +617,8 @@ def _with_uses(q: QueryInfo, comp: np.ndarray, encoder, block: _Block) -> np.nda
     uses = _nearest_uses(encoder, q.text)
     if not uses or not len(block.pair_row):
         return comp
-    lex = load_lexicon()
-    fits = np.array([[_by_kind(lex, uses, cc)] for cc in block.concepts], dtype=np.float64)
+    fits = np.zeros((len(block.concepts), 1), dtype=np.float64)
+    fits[:, 0] = _kind_fit(block, tuple(uses.items()))
     out = comp.copy()
     out[:, [_USE]] = _best_over_labels(block, fits)
     out.flags.writeable = False
