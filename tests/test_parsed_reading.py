@@ -1,6 +1,10 @@
 """The reading of a request rests on a dependency parse: which noun phrase is the target, which
 sentences continue it and which only say why. Wordings written for these tests."""
 
+import os
+import subprocess
+import sys
+
 import pytest
 
 from iesm_agent.lexicon import load_lexicon
@@ -173,6 +177,15 @@ def test_a_misspelt_plural_noun_is_read_through_its_singular(typed, meant):
 @pytest.mark.parametrize("word", ["carpeted", "blanketed", "bookish", "matted", "benched", "tiring", "bellies"])
 def test_a_known_word_with_a_suffix_is_a_word_of_its_own_not_a_typo(word):
     assert load_lexicon().correct(word) == word
+
+
+def test_a_correction_does_not_depend_on_the_hash_seed():
+    # typed words with many lexicon words one edit away: all of them are weighed, in a fixed order
+    code = "from iesm_agent.lexicon import load_lexicon; l = load_lexicon(); print([l.correct(w) for w in %r])"
+    words = ["boll", "beal", "basy", "aear"]
+    answers = {subprocess.run([sys.executable, "-c", code % words], env={**os.environ, "PYTHONHASHSEED": str(seed)},
+                              capture_output=True, text=True, check=True).stdout for seed in (0, 8, 12, 21)}
+    assert len(answers) == 1
 
 
 @pytest.mark.parametrize("typed, meant", [("benchh", "bench"), ("rugg", "rug"), ("sofaa", "sofa")])

@@ -146,7 +146,10 @@ class Lexicon:
         from rapidfuzz.process import extract
 
         limit = 1 if len(token) < 7 else 2
-        found = extract(token, words, scorer=OSA.distance, score_cutoff=limit, limit=6)
+        # every word within the limit, in a fixed order: a cut at the first few would keep those the set's
+        # hash order happens to put first (the answer varied with PYTHONHASHSEED)
+        found = sorted(extract(token, words, scorer=OSA.distance, score_cutoff=limit, limit=None),
+                       key=lambda found: (found[1], found[0]))
         # two edits only keep the first letter (people rarely mistype it: "cubbard" is a
         # cupboard, "scullery" no cutlery); among equally close words, those keeping it first
         found = [(w, d) for w, d, _ in found if d < 2 or w[0] == token[0]]
