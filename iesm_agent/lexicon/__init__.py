@@ -153,8 +153,7 @@ class Lexicon:
         # two edits only keep the first letter (people rarely mistype it: "cubbard" is a
         # cupboard, "scullery" no cutlery); among equally close words, those keeping it first
         found = [(w, d) for w, d, _ in found if d < 2 or w[0] == token[0]]
-        same_start = [(w, d) for w, d in found if w[0] == token[0]]
-        found = sorted(same_start or found, key=lambda wd: wd[1])
+        found = [(w, d) for w, d in found if w[0] == token[0]] or found  # (still by distance, then word)
         closest = [w for w, d in found if d == found[0][1]] if found else []
         typed = [w for w in closest if _slip(token, w)]  # a letter dropped, doubled or swapped before
         closest = typed or closest                       # one mistyped: "banket" a blanket, not a basket

@@ -39,7 +39,8 @@ _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for
 #: clause relations under which a verb's object can be the request's target
 _CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 #: prepositions that say where a thing is ("on the hook", "next [to] the door")
-_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to", "onto", "into"})
+_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to", "onto",
+                     "into"})
 #: verbs that put their object somewhere ("hang my coat on the hook"): that place is where to go
 _PLACING_VERBS = frozenset({"put", "place", "set", "hang", "lay", "rest", "store", "stash", "drop", "prop", "stand"})
 NOUNS = ("NOUN", "PROPN")

@@ -277,9 +277,9 @@ def analyse_query(text: str) -> QueryInfo:
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     fronted_or_one = reading.structure.excluded is not None or "one" in reading.lemmas
     kind_of_one = reading.ruled_out[0] if fronted_or_one and reading.ruled_out else None
-    named_before = reading.structure.kind  # "I need a clean mug; the blue ones": the kind, whatever the wish
-    if kind_of_one is None and named_before is not None:
-        kind_of_one = analyse_query(reading.structure.words[named_before].text)
+    named_before = reading.structure.kind is not None  # "I need a mug; the blue ones": its kind, whatever the wish
+    if kind_of_one is None and named_before:
+        kind_of_one = analyse_query(reading.structure.words[reading.structure.kind].text)
     if not _named(info) and kind_of_one is not None and kind_of_one.named and (not info.afford or named_before):
         # "Not the tall oak wardrobe, the short pine one", "the pine one, not the oak wardrobe":
         # one of the kind the exclusion named

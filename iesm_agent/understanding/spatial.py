@@ -273,7 +273,10 @@ class _Reader:
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height: a
         modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
-        "of" said of the target ("the cup on top"); not a place on a plan (`on_a_plan`)."""
+        "of" said of the target ("the cup on top"); not a place on a plan (`on_a_plan`); or "high" or
+        "low" beside "up" or "down" ("the mug up high", "the one low down")."""
+        if self.toks[i] in ("high", "low"):
+            return bool({"up", "down"} & set(self.toks[max(i - 1, 0):i] + self.toks[i + 1:i + 2]))
         if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None or self.on_a_plan(i):
             return False
         st, k, word = self.structure, self.words[i], self.word(i)
@@ -384,10 +387,9 @@ class _Reader:
                 i += 1
             elif i in self.cat_at or i in self.near_rooms:  # never a cue ("first aid kit", "corner shelf")
                 i = self.named_side(i)
-            elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i) or toks[i] in ("high", "low") \
-                    and {"up", "down"} & {toks[i - 1] if i else "", toks[i + 1] if i + 1 < len(toks) else ""}:
-                # ("the mug up high", "the one low down")
-                out.relations.append(Relation("extreme", value=_EXTREMES.get(toks[i]) or _HEIGHT_NOUNS.get(toks[i], toks[i])))
+            elif (toks[i] in _EXTREMES and not self.on_a_plan(i)) or self.height_word(i):
+                value = _EXTREMES.get(toks[i]) or _HEIGHT_NOUNS.get(toks[i], toks[i])  # ("high", "low": themselves)
+                out.relations.append(Relation("extreme", value=value))
                 i += 1
             elif toks[i] in _ORDINALS:
                 self.pending_ordinal = Relation("ordinal", order=_ORDINALS[toks[i]], value="left")

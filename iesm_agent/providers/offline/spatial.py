@@ -250,7 +250,7 @@ def _end_of(scene: _Scene, rows: np.ndarray, end: str) -> geo.Boxes:
     a wall the prompt shows, else the edge of the objects of its room) or its "foot" (the other end); ids -1."""
     boxes = scene.boxes.take(rows)
     walls = scene.boxes.take(np.array(["wall" in words for words in scene.label_words], bool))
-    room_lo, room_hi = _extent(scene, rows)
+    room_lo, room_hi = _extent(scene, rows) if not len(walls) else (None, None)  # (only without walls)
     lo, hi = boxes.lo.copy(), boxes.hi.copy()
     for k in range(len(rows)):
         axis = int(np.argmax(hi[k, :2] - lo[k, :2]))  # along its length

@@ -223,7 +223,8 @@ def _related_kind(q: QueryInfo, comp: np.ndarray, tier: np.ndarray) -> np.ndarra
 
 #: each role's weights of the components (a constant: building the array took about 1 us a call)
 _ALL_WEIGHTS = np.array([1.0, 0.6, 0.6, 0.6, 0.3, 0.3, 0.0, 0.0])
-_OBJ_WEIGHTS = {lexical: np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0]) for lexical in (True, False)}
+_OBJ_WEIGHTS = {lexical: np.array([0.3, 0.6, 0.6, 0.3, 0.3, 0.3 if lexical else 1.0, 0.0, 0.0])
+                for lexical in (True, False)}
 _DESC_WEIGHTS = np.array([0.5, 0.1, 1.0, 0.3, 0.3, 0.3, 0.3, 0.0])
 for _weights in (_ALL_WEIGHTS, _OBJ_WEIGHTS[True], _OBJ_WEIGHTS[False], _DESC_WEIGHTS):
     _weights.flags.writeable = False
