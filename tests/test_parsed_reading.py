@@ -309,3 +309,45 @@ def test_a_request_without_words_reads_as_empty_not_as_an_error(text):
 
 def test_a_speakers_thing_with_no_place_said_names_no_target():
     assert _target("my mug is empty") is None
+
+
+def test_a_verb_of_posture_said_of_a_thing_places_it_and_asks_for_no_seat():
+    placed = analyse_query("This is a small blue gadget. It sits on the hall shelf.")
+    assert not any(c in placed.afford for c in ("chair", "sofa", "stool"))
+    joined = analyse_query("a copper kettle. it heats up fast and stands on the hob.")
+    assert "chair" not in joined.afford
+    assert "chair" in analyse_query("somewhere I can sit").afford  # the speaker sits: a seat is wanted
+
+
+def test_a_room_word_used_as_a_verb_names_no_room():
+    assert analyse_query("I want to lounge for a bit").rooms == {}
+    assert analyse_query("a reading lamp in the lounge").rooms == {"living room": 1.0}
+    assert analyse_query("the rug in the sitting room").rooms == {"living room": 1.0}
+
+
+def test_a_thing_before_a_hyphened_colour_suffix_is_a_colour():
+    assert analyse_query("the light-coloured rug").targets == {"rug": 1.0}
+    assert analyse_query("pillows, any colour").targets == {"pillow": 1.0}  # no hyphen: the pillows themselves
+
+
+@pytest.mark.parametrize("text, target", [
+    ("I want to sit in one of the soft green armchairs", "armchairs"),         # what the speaker sits in
+    ("I'd like to lie down in the den, on the long corduroy couch", "couch"),  # not the room
+    ("we could sit on the bench in the garden", "bench"),
+])
+def test_the_seat_a_speaker_sits_or_lies_on_is_the_target(text, target):
+    assert _target(text) == target
+
+
+@pytest.mark.parametrize("text, target", [
+    ("I fancy a biscuit: the round tin on the worktop", "tin"),         # parsed as an apposition
+    ("I need a spare bulb: the small drawer under the stairs", "drawer"),
+    ("The fire is too warm, so the sofa by the window instead", "sofa"),  # after "so"
+])
+def test_a_noun_phrase_after_a_colon_or_so_names_the_target_again(text, target):
+    assert _target(text) == target
+
+
+def test_rather_than_with_words_between_rules_out_what_follows():
+    info = analyse_query("I'd rather sit on the green sofa than the velvet one")
+    assert ("color", "green") in info.attrs and ("material", "velvet") in info.excluded_attrs

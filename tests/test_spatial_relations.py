@@ -11,6 +11,7 @@ from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore
 from iesm_agent.store.importers.objects import import_objects
 from iesm_agent.understanding import analyse_query
+from iesm_agent.understanding.parse import normalise
 from iesm_agent.understanding.spatial import parse_query
 
 
@@ -686,3 +687,33 @@ def test_a_wall_the_map_shows_says_where_the_head_is(tmp_path):
     # the same cot with a wall drawn along its south end: that end is its head, whatever the room's extent
     store = make_store(tmp_path, COT_ROOM + [box(5, "wall", (2.0, 1.95, 1.2), (3.0, 0.1, 2.4))], name="cot_wall")
     assert spatial(store, "the cushion nearest the head of the bed")[0] == 3
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the chair in the middle of the three", 11),                  # the middle of its own kind, not of the room
+    ("go to the red chair nearer the desk in the bedroom", 12),    # "nearer" tagged as a noun keeps its landmark
+])
+def test_relations_the_tagger_could_hide(room, query, best):
+    ranked = spatial(room, query)
+    assert ranked and ranked[0] == best, (query, ranked)
+
+
+def test_a_colon_closes_the_viewpoint_clause_and_bare_nouns_get_their_article():
+    assert parse_query("facing the bed: the nightstand on the right, not the left one").facing == ("bed",)
+    assert normalise("stool closest window") == "stool closest to the window"
+    assert normalise("the lamp nearest it") == "the lamp nearest to it"  # a pronoun takes no article
+
+
+@pytest.mark.parametrize("method", ["mtefr", "spr"])
+def test_a_contrast_leaves_one_of_the_kind_asked_for(tmp_path, method):
+    # both bedside tables are wooden: "not the pine one" must not rule out the white one as well
+    store = make_store(tmp_path, [
+        box(1, "nightstand", (0.5, 0.5, 0.3), (0.4, 0.4, 0.6), tags={"color": "brown", "material": "pine"},
+            room="guest bedroom"),
+        box(2, "nightstand", (3.0, 3.0, 0.3), (0.4, 0.4, 0.6), tags={"color": "white", "material": "wood"},
+            room="master bedroom"),
+        box(3, "table", (2.0, 1.0, 0.4), (1.0, 1.0, 0.8), tags={"color": "black", "material": "metal"},
+            room="master bedroom"),
+    ])
+    r = Retriever(store, provider=OfflineModel(use_embeddings=False), method=method)
+    assert r.ask("the bedside table in the master bedroom, not the pine one").instance_id == 2

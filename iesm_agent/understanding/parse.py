@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from ..errors import IesmError
+from ..lexicon import load_lexicon
 from .clauses import TARGET_PRONOUNS
 from .motion import DESTINATION_PREPS, MOTION_VERBS
 
@@ -55,7 +56,9 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
               # or, typed without articles, between two nouns ("stool closest window")
               (re.compile(r"\b((?!(?:the|a|an|my|your|this|that|these|those|its|our|their)\b)[a-z]+ "
                           r"(?:near|clos)e(?:r|st)) (?=(?!(?:to|from|of|one|ones|by)\b)[a-z]+\b)", re.IGNORECASE),
-               r"\1 to "))
+               r"\1 to "),  # and its noun with an article ("closest to window": "to" read as a verb's)
+              (re.compile(r"\b((?:near|clos)e(?:r|st) to) (?=(?!(?:the|a|an|my|your|this|that|these|those|its|our|their"
+                          r"|it|them|me|you|us|him|her)\b)[a-z]+\b)", re.IGNORECASE), r"\1 the "))
 #: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its
 #: punctuation; a full stop ends it too ("Not the big pan. The small pot.": the next sentence asks)
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,.!?\u2013\u2014]*?(?:[:;,\u2013\u2014]|[.!?](?=\s)| - )\s*",
@@ -317,9 +320,15 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
         t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
             c.dep_ == "det" and c.lower_ in ("that", "this") and c.i > sent.start and c.nbor(-1).text in (",", ":")
             for c in t.children)
-        or t.dep_ == "dep" and t.left_edge.i > sent.start and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
+        or t.dep_ in ("dep", "dobj", "appos") and t.left_edge.i > sent.start
+        and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
         None)
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
+
+
+def _a_room(token) -> bool:
+    """True when `token` names a room ("the den", "the sitting room")."""
+    return token.lower_ == "room" or any(kind == "room" for kind, _ in load_lexicon().phrases.get((token.lower_,), ()))
 
 
 def _place_of(heads) -> int | None:
@@ -390,6 +399,10 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     if verb.lemma_ in _PLACING_VERBS and doer in _PERSONAL | {"you"} and any(c.dep_ == "dobj" for c in verb.children) \
             and (placed := _place_of([verb])) is not None:
         return placed
+    seats = [k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
+             if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and not _a_room(doc[k])]
+    if seats and verb.lemma_ in ("sit", "lie") and doer in _PERSONAL | {"you"}:  # what is sat on, not a room
+        return seats[0]  # ("I'd like to sit down in the den, in one of the armchairs")
     for child in () if clauses_only else verb.children:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         found = _object_of(doc, child) if way else child.i if child.lower_ in ("one", "ones") else _noun_of(child)

@@ -20,9 +20,11 @@ _UNSPECIFIC = frozenset({"object"})
 _THEME_WEIGHT = 0.35
 #: word sequences after which the query says what the target is NOT
 _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
-               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",))
+               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",), ("than",))
 #: words that introduce a part or feature of the target ("with the torn flap")
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
+#: verbs of posture, said of a thing, say where it is ("it sits on the worktop"), not what to do there
+_POSTURE, _THING_SUBJECTS = frozenset({"sit", "stand", "lie", "rest", "perch"}), {"it", "which", "that", "this"}
 #: words that open the request proper after a preamble ("I'm chilly, lead me towards ...")
 _REQUEST_OPENERS = frozenset({"find", "show", "locate", "where", "navigate", "point", "search", "look", "visit"})
 #: share of the request's function evidence a preamble's function evidence gets
@@ -205,7 +207,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     start, end = structure.request
     tokens = [_Token(token, start + at) for token, at in lex.token_offsets(corrected[start:end])]
     marker = next(((i, i + len(words)) for i in range(1, len(tokens)) for words in _EXCLUSIONS
-                   if tuple(tokens[i:i + len(words)]) == words), None)  # the first exclusion after the first word
+                   if tuple(tokens[i:i + len(words)]) == words and (words != ("than",) or "rather" in tokens[:i])),
+                  None)  # the first exclusion after the first word ("than" after "rather": "rather sit on X than Y")
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the sill.")
@@ -226,7 +229,10 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     surface = [t for t in tokens if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
-    return _Reading(corrected, structure, surface, lemmas, lex.scan(lemmas, breaks), preamble, ruled_out)
+    spans = [s for s in lex.scan(lemmas, breaks) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)  # "light-coloured":
+             or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]  # not a lamp
+             or corrected[surface[s.end].at - 1] != "-"]
+    return _Reading(corrected, structure, surface, lemmas, spans, preamble, ruled_out)
 
 
 def parse_queries(texts: list[str]) -> None:
@@ -305,6 +311,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                                         for s in reading.spans)
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
+        word = structure.index_at(surface[s.start].at)  # the parse's word under the span's first token
         if s is head or s.has("gen") and in_target:  # a class noun's words too: a label may say it ("bucket")
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
@@ -318,7 +325,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                 _add_entry(afford, lex.generic[info.generic], 1.0)
                 info.purpose = True
             continue
-        if s.has("room") and not (in_target and s.has("cat")):
+        if s.has("room") and not (in_target and s.has("cat")) and not (  # "where I want to lounge": no room
+                word is not None and structure.words[word].pos == "VERB" and structure.children(word, "aux", "nsubj")):
             if _outside_target(structure, surface, s, target, described, place_ok=True) \
                     or near_room(surface, s.start, s.end, {t.start for t in reading.spans if t.has("cat")}):
                 continue  # "a case for the office papers": the papers' room; "closest to the den": a landmark
@@ -332,12 +340,11 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         attr_spans += [s] if attr else []
         if attr and not s.has("cue"):
             continue
-        if s.has("cue") and s.start not in clause:
+        if s.has("cue") and s.start not in clause and not _posed(structure, lemmas[s.start], word):
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
             # a cue on a noun the parse puts under the target noun ("the grey file with a tag on the spine") describes
             # the thing, not what to do (a head noun that is a cue names a class of things: a perch to sit on)
-            word = structure.index_at(surface[s.start].at)
             info.purpose = info.purpose or s.end - s.start > 1 or info.abstract or not (
                 word is not None and target.word is not None and word != target.word
                 and structure.words[word].pos in NOUNS and structure.dominates(target.word, word))
@@ -371,6 +378,14 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
     if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
         stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
         info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
+
+
+def _posed(structure: Structure, lemma: str, k: int | None) -> bool:
+    """True when the parsed word `k` is a verb of posture said of a thing, itself or through the verb it is
+    joined to ("it sits on the worktop", "it plugs in and sits there")."""
+    verbs = {k, structure.words[k].head if k is not None and structure.words[k].dep == "conj" else k}
+    return lemma in _POSTURE and k is not None and any(
+        structure.words[n].text.lower() in _THING_SUBJECTS for n in structure.children(verbs, "nsubj"))
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:

@@ -174,10 +174,11 @@ class _Reader:
         return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
 
     def cue_object(self) -> set[int] | None:
-        """Parsed words the current cue governs ("the far side of [the piano]": through the noun
-        the cue modifies); None when they hold no noun or pronoun (or no cue is being read)."""
+        """Parsed words the current cue governs ("the far side of [the piano]": through the noun the cue modifies;
+        not a compound before it: "nearer" taken for a noun); None when they hold no noun or pronoun (or no cue)."""
         st, cue = self.structure, self.noun_of(self.cue_word)
-        below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)}
+        below = {k for k in range(len(st.words)) if k != cue and st.dominates(cue, k)
+                 and (k > self.cue_word or st.words[k].dep != "compound")}
         return below if any(st.words[k].pos in ("NOUN", "PROPN", "PRON") for k in below) else None
 
     def points_back(self, word: int) -> bool:
@@ -485,11 +486,12 @@ class _Reader:
 
     def facing(self, i: int) -> int:
         """The viewpoint of a cue ending before `i` ("facing the wardrobe"). When the parse's target lies in a
-        viewpoint clause the comma closes ("facing the window, the shelf on the left"), the target is the
+        viewpoint clause a comma or colon closes ("facing the window, the shelf on the left"), the target is the
         first free category after the comma that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""
         at, st = self.target_at, self.structure
-        comma = -1 if at is None or at < i else self.corrected.find(",", self.offsets[i - 1])
+        ends = [k for k in (self.corrected.find(c, self.offsets[i - 1]) for c in ",:;") if k >= 0]
+        comma = -1 if at is None or at < i or not ends else min(ends)  # where the clause ends
         if comma >= 0 and self.offsets[at] < comma:
             after = next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
                           and self.words[j] is not None
@@ -526,12 +528,12 @@ class _Reader:
 
     def place_of(self, i: int, kind: str) -> int:
         """"the middle of X", "the corner of X": relative to the object X; the middle one of the
-        target's own kind ("of the three vases"); the room's middle or corner when X is no object
+        target's own kind ("of the three vases", "of the three"); the room's middle or corner when X is no object
         (a room named after "of" is read for itself, so a clause on it keeps its own relation)."""
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
         objects |= {o for k in objects if self.span_of.get(k) is None for p in st.children(k, "prep")
                     if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
-        if kind == "middle" and any(self.points_back(k) for k in objects):
+        if kind == "middle" and any(self.points_back(k) or st.words[k].pos in ("NUM", "PRON") for k in objects):
             rel.value = "group"
         elif any(self.span_of.get(k) is not None for k in objects):
             self.landmark(rel, i)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span
 
 _CLAUSE_MARK = re.compile(r"[.,;:!?()]")
-SENTENCE_MARK = re.compile(r"[.!?]")
+SENTENCE_MARK = re.compile(r"[.!?:;]")
 #: (length a word must exceed, suffix) that `stem` cuts, the first that fits
 _SUFFIXES = ((5, "ing"), (4, "ed"), (4, "es"), (3, "s"))
 

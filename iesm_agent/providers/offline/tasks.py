@@ -174,20 +174,26 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
 
 def _ruled_out(q: QueryInfo, records: list[Record]) -> np.ndarray:
     """(N,) bool: candidates the query excludes: of an excluded category, or with an excluded
-    attribute and none of the attributes the query asks for."""
+    attribute and none of the attributes the query asks for. A contrast leaves one of the kind
+    asked for: when the excluded attributes would rule out every candidate of that kind ("the
+    bedside table, not the pine one" where both are wooden), they rule out none of it."""
     out = np.zeros(len(records), dtype=bool)
     if not q.excluded_targets and not q.excluded_attrs:
         return out
     lex = load_lexicon()
     wanted = set(q.attrs)
+    of_kind = np.zeros(len(records), dtype=bool)
+    by_attr = np.zeros(len(records), dtype=bool)
     for k, r in enumerate(records):
         kinds = [c for c, w in r.concepts if w >= 1.0]
-        if any(lex.concept_sim(x, c) >= 0.9 for x in q.excluded_targets for c in kinds) \
-                and not any(lex.concept_sim(t, c) >= 0.9 for t, w in q.targets.items() if w >= 1.0 for c in kinds):
+        of_kind[k] = any(lex.concept_sim(t, c) >= 0.9 for t, w in q.targets.items() if w >= 1.0 for c in kinds)
+        if any(lex.concept_sim(x, c) >= 0.9 for x in q.excluded_targets for c in kinds) and not of_kind[k]:
             out[k] = True
         elif r.attrs & q.excluded_attrs and not r.attrs & wanted:
-            out[k] = True
-    return out
+            by_attr[k] = True
+    if of_kind.any() and not (of_kind & ~by_attr & ~out).any():
+        by_attr &= ~of_kind
+    return out | by_attr
 
 
 def _tiers(fit: np.ndarray, min_best: float) -> np.ndarray:
