@@ -562,11 +562,10 @@ class _Reader:
             st, k = self.structure, self.cue_word
             if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING | _LOOKING or self.opens_clause(k)):
                 self.viewer_landmark(Relation("from"), i)
-            return i
-        if nxt in ("left", "right"):
+        elif nxt in ("left", "right"):
             self.pending_ordinal.value = nxt
             return i + 1
-        if self.landmark(self.pending_ordinal, i):
+        elif self.landmark(self.pending_ordinal, i):
             self.pending_ordinal.value = "landmark"
         return i
 
