@@ -32,8 +32,7 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
         return info
     rooms, labels = tuple(sorted(set(rooms))), tuple(sorted(set(labels)))
     key = (info.text, rooms, labels, getattr(encoder, "name", None))
-    hit = _grounded.get(key)
-    if hit is not None:
+    if (hit := _grounded.get(key)) is not None:
         return hit
     targets, found_rooms, overlap = dict(info.targets), dict(info.rooms), info.overlap
     if info.unknown_target:
@@ -48,14 +47,12 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
         room = _misspelt_label(info.unknown_room, rooms) or _nearest(encoder, info.unknown_room, rooms)
         if room is not None:
             found_rooms[room] = 1.0
-    grounded = info
-    if targets != info.targets or found_rooms != info.rooms or overlap != info.overlap:
-        named = (targets, overlap) != (info.targets, info.overlap)
-        grounded = dataclasses.replace(
-            info, targets=targets, rooms=found_rooms, overlap=overlap,
-            kin=functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0]),
-            target_phrase=info.target_phrase or (info.unknown_target if named else None),
-            room_phrase=info.room_phrase or (info.unknown_room if found_rooms != info.rooms else None))
+    named, placed = (targets, overlap) != (info.targets, info.overlap), found_rooms != info.rooms
+    grounded = info if not (named or placed) else dataclasses.replace(
+        info, targets=targets, rooms=found_rooms, overlap=overlap,
+        kin=functional_kin(load_lexicon(), [c for c, w in targets.items() if w >= 1.0]),
+        target_phrase=info.target_phrase or (info.unknown_target if named else None),
+        room_phrase=info.room_phrase or (info.unknown_room if placed else None))
     if len(_grounded) >= _CACHE_SIZE:
         _grounded.clear()
     _grounded[key] = grounded
@@ -83,5 +80,4 @@ def _nearest(encoder: Any, phrase: str, options: Sequence[str]) -> str | None:
     order = np.argsort(-sims)
     best = float(sims[order[0]])
     runner_up = float(sims[order[1]]) if len(order) > 1 else -1.0
-    clear = best >= MIN_SIMILARITY and best - runner_up >= MIN_MARGIN
-    return options[int(order[0])] if clear else None
+    return options[int(order[0])] if best >= MIN_SIMILARITY and best - runner_up >= MIN_MARGIN else None

@@ -80,15 +80,6 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
 
 
 @lru_cache(maxsize=65536)
-def _caption_profile(text: str) -> tuple[frozenset[tuple[str, str]], frozenset[str]]:
-    """(attributes, lemmas) of a label, caption or tag value."""
-    lex = load_lexicon()
-    lemmas = [lex.lemma(t) for t in lex.tokens(text)]
-    attrs = {(k, v) for s in lex.scan(lemmas) for k, v in s.kinds if k in ATTRIBUTE_KINDS}
-    return frozenset(attrs), frozenset(lemmas)
-
-
-@lru_cache(maxsize=65536)
 def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     """Attribute slots and word stems of a caption, tag value or label. Punctuation separates
     ("white, red" is two colours); words next to each other may form a compound ("blue-gray")."""
@@ -138,10 +129,11 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
     lex = load_lexicon()
     tags = data.get("tags")
     parts = [label, caption] + ([_as_text(v) for v in tags.values()] if isinstance(tags, dict) else [])
-    profiles, slots = [_caption_profile(p) for p in parts], [text_slots(p) for p in parts]
+    lemmas, slots = [[lex.lemma(t) for t in lex.tokens(p)] for p in parts], [text_slots(p) for p in parts]
+    attrs = [frozenset({(k, v) for s in lex.scan(ls) for k, v in s.kinds if k in ATTRIBUTE_KINDS}) for ls in lemmas]
     return ident, Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
-                         room=room_of(room), attrs=frozenset().union(*(a for a, _ in profiles)),
-                         words=frozenset().union(*(w for _, w in profiles)), label_words=profiles[0][1],
+                         room=room_of(room), attrs=frozenset().union(*attrs), label_words=frozenset(lemmas[0]),
+                         words=frozenset().union(*map(frozenset, lemmas)),
                          text=". ".join(p for p in (label, caption) if p),
                          slots=tuple(dict.fromkeys(s for found, _ in slots for s in found)),
                          stems=frozenset().union(*(st for _, st in slots)),

@@ -12,7 +12,7 @@ from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
 from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark,
                       is_stranded, near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
-from .parse import NAMING, Word, normalise, parse_request
+from .parse import NAMING, NOUNS, Word, normalise, parse_request
 from .query import analyse_query
 from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
@@ -115,8 +115,7 @@ def _side_words(kept: list[tuple[str, int]], text: str) -> list[tuple[str, int]]
     for token, at in kept:
         if token == "most" and out and text[at - 1:at] == "-" and _CUES.get((out[-1][0],)) in _SIDES:
             continue
-        stem = token[:-4] if token.endswith("most") else ""
-        out.append((stem if _CUES.get((stem,)) in _SIDES else token, at))
+        out.append((token[:-4] if token.endswith("most") and _CUES.get((token[:-4],)) in _SIDES else token, at))
     return out
 
 
@@ -184,28 +183,27 @@ class _Reader:
     def points_back(self, word: int) -> bool:
         """True when the parsed `word` stands for the target: a pronoun ("its left", "behind it")
         or the target's kind named again ("to the left of the piano", said of the piano)."""
-        st = self.structure
+        st, j, at = self.structure, self.span_of.get(word), self.target_at
         if st.words[word].text.lower() in BACK_REFERENCES | {"its"}:
             return True
-        j = self.span_of.get(word)
-        if j is not None and j == self.target_at and any(st.words[d].text.lower() == "this" for d in st.children(word, "det")):
-            return True  # "there is a rug under this table", said of the table
-        return j is not None and self.target_at is not None and j != self.target_at \
-            and self.cat_at[j].values("cat") == self.cat_at[self.target_at].values("cat")
+        if j is None or at is None:
+            return False
+        if j == at:  # "there is a rug under this table", said of the table
+            return any(st.words[d].text.lower() == "this" for d in st.children(word, "det"))
+        return self.cat_at[j].values("cat") == self.cat_at[at].values("cat")
 
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
         st = self.structure
-        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[st.words[k].head].pos in ("NOUN", "PROPN") \
-                and st.words[k].head != k:
+        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[k].head != k \
+                and st.words[st.words[k].head].pos in NOUNS:
             k = st.words[k].head
         return k
 
     def side_of(self) -> bool:
         """True when the side word's noun has an "of": a landmark's side ("the right side of the piano")."""
         k, st = self.noun_of(self.cue_word), self.structure
-        of = st.of_phrase(k)
-        owner = self.span_of.get(k)  # "the left stool of the three stools": which of them, not a landmark
+        of, owner = st.of_phrase(k), self.span_of.get(k)  # "the left stool of the three stools": not a landmark
         return of is not None and (owner is None or not any(
             j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
             for j in map(self.span_of.get, st.children(of, "pobj"))))
@@ -272,10 +270,9 @@ class _Reader:
             and (_CUES.get((after,)) in _SIDES or after == "corner")
 
     def height_word(self, i: int) -> bool:
-        """True when token `i` is "top" or "bottom" saying where the target sits in height: a
-        modifier of the target's noun ("the bottom drawer") or the object of "on"/"at" with no
-        "of" said of the target ("the cup on top"); not a place on a plan (`on_a_plan`); or "high" or
-        "low" beside "up" or "down" ("the mug up high", "the one low down")."""
+        """True when token `i` is "top" or "bottom" saying where the target sits in height (not on a plan): a modifier
+        of the target's noun ("the bottom drawer") or the object of "on"/"at" with no "of" said of the target ("the cup
+        on top"); or "high" or "low" beside "up" or "down" ("the mug up high", "the one low down")."""
         if self.toks[i] in ("high", "low"):
             return bool({"up", "down"} & set(self.toks[max(i - 1, 0):i] + self.toks[i + 1:i + 2]))
         if self.toks[i] not in _HEIGHT_NOUNS or self.words[i] is None or self.on_a_plan(i):
@@ -283,9 +280,8 @@ class _Reader:
         st, k, word = self.structure, self.words[i], self.word(i)
         if st.children(k, "amod", "compound") or i in self.part_described:
             return False  # the top itself described ("a glass top table"): a part, not a height
-        if word.dep in ("amod", "compound"):  # of the target's own noun: "the bottom shelf" is a place;
-            owner = self.span_of.get(word.head)  # of a part of a landmark: "on the top shelf of the bookcase"
-            return self.target_at is not None and owner is not None and owner in (self.target_at, *self.parts)
+        if word.dep in ("amod", "compound"):  # of the target's noun ("the bottom shelf") or of a part (`parts`)
+            return self.target_at is not None and self.span_of.get(word.head) in (self.target_at, *self.parts)
         if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") or st.of_phrase(k) is not None:
             return False
         owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
@@ -449,15 +445,15 @@ class _Reader:
 
     def relation(self, i: int, words: tuple[str, ...], kind: str) -> int:
         """Read the relation of `kind` whose cue `words` ends before `i`; the position after it."""
-        toks, out, st = self.toks, self.out, self.structure
+        toks, out, st, cue = self.toks, self.out, self.structure, self.word(i - 1)  # (the cue's last word)
         nxt = toks[i] if i < len(toks) else ""
         before = i - len(words) - 1  # the word before the cue
         side_noun = (nxt in ("left", "right") or _CUES.get((nxt,)) in COMPASS) \
             and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
-        if kind != "facing" and len(words) == 1 and self.word(i - 1).pos in ("VERB", "AUX") and any(
-                st.words[k].pos == "PRON" for k in st.children(self.words[i - 1], "nsubj")):
+        if kind != "facing" and len(words) == 1 and cue.pos in ("VERB", "AUX") and any(
+                st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
             return i  # "the mug I left there": a verb with a pronoun subject (not just tagged a verb: "..., left jar")
         if kind in ("on", "wall") and nxt in ("wall", "walls"):
             out.relations.append(Relation("wall"))
@@ -471,9 +467,8 @@ class _Reader:
         if kind == "middle" and self.says_which_landmark(kind):
             return i
         if kind == "right" and nxt != "of" and i < len(toks) and self.cue_word is not None and (
-                (self.word(i).pos == "ADP" and self.structure.words[self.cue_word].dep != "pobj")
-                or (self.structure.words[self.cue_word].dep == "advmod" and self.word(i).dep != "pobj"
-                    and self.structure.words[self.cue_word].head == self.words[i])):
+                self.word(i).pos == "ADP" and cue.dep != "pobj"
+                or cue.dep == "advmod" and self.word(i).dep != "pobj" and cue.head == self.words[i]):
             return i  # "right under the basin", "right alongside it": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
                 and toks[before] in ("in", "at", "by"):
@@ -499,9 +494,7 @@ class _Reader:
             if after is not None:
                 self.out.facing, self.target_at = tuple(self.cat_at[at].values("cat")), after
                 self.used.add(after)
-            return i
-        j = self.next_cat(i)
-        if j is not None:
+        elif (j := self.next_cat(i)) is not None:
             self.used.add(j)
             self.out.facing = tuple(self.cat_at[j].values("cat"))
         return i
@@ -560,9 +553,8 @@ class _Reader:
             return
         j = self.taken[rel][-1]
         part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
-        if not objects & self.span_words[j] and not part:
-            return  # "standing at the centre of the hall, ...": no object the cue takes
-        setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
+        if part or objects & self.span_words[j]:  # an object the cue takes (not "at the centre of the hall, ...")
+            setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
 
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
@@ -572,11 +564,10 @@ class _Reader:
             st, k = self.structure, self.cue_word
             if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING | _LOOKING or self.opens_clause(k)):
                 self.viewer_landmark(Relation("from"), i)
-            return i
-        if nxt in ("left", "right"):
+        elif nxt in ("left", "right"):
             self.pending_ordinal.value = nxt
             return i + 1
-        if self.landmark(self.pending_ordinal, i):
+        elif self.landmark(self.pending_ordinal, i):
             self.pending_ordinal.value = "landmark"
         return i
 
