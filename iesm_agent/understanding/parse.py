@@ -326,11 +326,6 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
 
 
-def _a_room(token) -> bool:
-    """True when `token` names a room ("the den", "the sitting room")."""
-    return token.lower_ == "room" or any(kind == "room" for kind, _ in load_lexicon().phrases.get((token.lower_,), ()))
-
-
 def _place_of(heads) -> int | None:
     """The noun after the first place word on any of `heads` ("on the hook"; "on top of the cabinet": the
     cabinet); None when there is none."""
@@ -400,7 +395,8 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             and (placed := _place_of([verb])) is not None:
         return placed
     seats = [k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
-             if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and not _a_room(doc[k])]
+             if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and doc[k].lower_ != "room"  # not the den,
+             and "room" not in dict(load_lexicon().phrases.get((doc[k].lower_,), ()))]  # the sitting room
     if seats and verb.lemma_ in ("sit", "lie") and doer in _PERSONAL | {"you"}:  # what is sat on, not a room
         return seats[0]  # ("I'd like to sit down in the den, in one of the armchairs")
     for child in () if clauses_only else verb.children:

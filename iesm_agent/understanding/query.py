@@ -18,7 +18,8 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase when the target names no known kind
 #: ("somewhere to put my cup on")
 _THEME_WEIGHT = 0.35
-#: word sequences after which the query says what the target is NOT
+#: word sequences after which the query says what the target is NOT (the first after the request's first word;
+#: "than" only after "rather": "I'd rather sit on the sofa than the chair")
 _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",), ("than",))
 #: words that introduce a part or feature of the target ("with the torn flap")
@@ -207,8 +208,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     start, end = structure.request
     tokens = [_Token(token, start + at) for token, at in lex.token_offsets(corrected[start:end])]
     marker = next(((i, i + len(words)) for i in range(1, len(tokens)) for words in _EXCLUSIONS
-                   if tuple(tokens[i:i + len(words)]) == words and (words != ("than",) or "rather" in tokens[:i])),
-                  None)  # the first exclusion after the first word ("than" after "rather": "rather sit on X than Y")
+                   if tuple(tokens[i:i + len(words)]) == words and (words[0] != "than" or "rather" in tokens[:i])), None)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the sill.")
@@ -340,7 +340,10 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
         attr_spans += [s] if attr else []
         if attr and not s.has("cue"):
             continue
-        if s.has("cue") and s.start not in clause and not _posed(structure, lemmas[s.start], word):
+        posed = lemmas[s.start] in _POSTURE and word is not None and any(  # "it sits", "it plugs in and sits"
+            structure.words[n].text.lower() in _THING_SUBJECTS for n in structure.children(
+                {word, structure.words[word].head if structure.words[word].dep == "conj" else word}, "nsubj"))
+        if s.has("cue") and s.start not in clause and not posed:
             for idx in s.values("cue"):
                 _add_entry(afford, lex.affordances[int(idx)], 1.0 if s.end - s.start > 1 else 0.8)
             # a cue on a noun the parse puts under the target noun ("the grey file with a tag on the spine") describes
@@ -378,14 +381,6 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
     if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
         stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
         info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
-
-
-def _posed(structure: Structure, lemma: str, k: int | None) -> bool:
-    """True when the parsed word `k` is a verb of posture said of a thing, itself or through the verb it is
-    joined to ("it sits on the worktop", "it plugs in and sits there")."""
-    verbs = {k, structure.words[k].head if k is not None and structure.words[k].dep == "conj" else k}
-    return lemma in _POSTURE and k is not None and any(
-        structure.words[n].text.lower() in _THING_SUBJECTS for n in structure.children(verbs, "nsubj"))
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
