@@ -38,6 +38,7 @@ def _target(text: str) -> str | None:
     ("garbage can beside the oven", "garbage"),                                 # "can" tagged as the root verb
     ("Which vase holds the tulips? Take me to it.", "vase"),                  # "it" points back
     ("ottoman nearest fireplace", "ottoman"),                                        # telegraphic: the superlative's noun
+    ("could you take me to the bin closest to the sink?", "bin"),             # "bin" left untagged (X) by the tagger
     ("please walk to the kettle closest to the toaster", "kettle"),          # "kettle closest" tagged as one word
     ("the trash can is grey. it sits by the piano.", "trash"),              # "can" tagged as a verb: its compound
     ("a bench stands by the piano. there are magazines on it.", "bench"),         # "there are ..." states, not asks
@@ -351,3 +352,13 @@ def test_a_noun_phrase_after_a_colon_or_so_names_the_target_again(text, target):
 def test_rather_than_with_words_between_rules_out_what_follows():
     info = analyse_query("I'd rather sit on the green sofa than the velvet one")
     assert ("color", "green") in info.attrs and ("material", "velvet") in info.excluded_attrs
+
+
+def test_another_persons_things_are_not_the_target_and_where_they_left_them_is():
+    assert _target("my daughter left her scarf on the blue ottoman") == "ottoman"
+    assert _target("his feet are cold, take me to the radiator") == "radiator"
+
+
+def test_a_stand_in_after_a_wish_is_of_the_kind_the_exclusion_names():
+    info = analyse_query("I'd like to read in the cream one, not the leather recliner")
+    assert [c for c, w in info.targets.items() if w >= 1.0] == ["armchair"] and ("color", "beige") in info.attrs

@@ -717,3 +717,14 @@ def test_a_contrast_leaves_one_of_the_kind_asked_for(tmp_path, method):
     ])
     r = Retriever(store, provider=OfflineModel(use_embeddings=False), method=method)
     assert r.ask("the bedside table in the master bedroom, not the pine one").instance_id == 2
+
+
+def test_a_landmark_of_no_kind_on_the_map_is_found_by_a_caption_naming_it(tmp_path):
+    # "oven" is no label here: the range's caption names one
+    store = make_store(tmp_path, [
+        box(1, "stove", (0.5, 3.5, 0.45), (0.6, 0.6, 0.9), caption="A white range cooker with an oven below."),
+        box(2, "chair", (0.8, 2.2, 0.45), (0.45, 0.45, 0.9)),
+        box(3, "chair", (3.0, 0.5, 0.45), (0.45, 0.45, 0.9)),
+    ])
+    assert spatial(store, "the chair closest to the oven")[:1] == [2]
+    assert spatial(store, "the chair farthest from the oven")[:1] == [3]

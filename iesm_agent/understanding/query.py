@@ -15,11 +15,9 @@ from .text import SENTENCE_MARK, Slot, clause_breaks, lemmatise, modifier_spans,
 
 #: category values that name nothing in particular ("object", "unknown", "clutter")
 _UNSPECIFIC = frozenset({"object"})
-#: weight of a category named outside the target phrase when the target names no known kind
-#: ("somewhere to put my cup on")
+#: weight of a category named outside the target phrase when the target names no known kind ("a spot for my cup")
 _THEME_WEIGHT = 0.35
-#: word sequences after which the query says what the target is NOT (the first after the request's first word;
-#: "than" only after "rather": "I'd rather sit on the sofa than the chair")
+#: word sequences after which the query says what the target is NOT (the first after word 0; "than" after "rather")
 _EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
                ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",), ("than",))
 #: words that introduce a part or feature of the target ("with the torn flap")
@@ -286,7 +284,8 @@ def analyse_query(text: str) -> QueryInfo:
     named_before = reading.structure.kind is not None  # "I need a mug; the blue ones": its kind, whatever the wish
     if kind_of_one is None and named_before:
         kind_of_one = analyse_query(reading.structure.words[reading.structure.kind].text)
-    if not _named(info) and kind_of_one is not None and kind_of_one.named and (not info.afford or named_before):
+    if not _named(info) and kind_of_one is not None and kind_of_one.named and (
+            not info.afford or named_before or "one" in reading.lemmas):
         # "Not the tall oak wardrobe, the short pine one", "the pine one, not the oak wardrobe":
         # one of the kind the exclusion named
         info.targets.update({c: 1.0 for c, w in kind_of_one.targets.items() if w >= 1.0})

@@ -123,18 +123,21 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
 
 @lru_cache(maxsize=512)
 def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...],
-             landmark: bool = False) -> np.ndarray:
+             landmark: bool = False, by_text: bool = False) -> np.ndarray:
     """(N,) bool, read-only: instances of one of `cats` (or of a more general kind when none is:
     "kitchen table" finds a "table"; a landmark's, the one whose caption or room says "kitchen",
-    if any), narrowed to those matching `attrs` best when any matches.
+    if any; with `by_text`, a landmark of no related kind at all is the one whose text names it: an
+    "oven" in "a gas cooker with an oven below", a point to be near or far from; not a thing to be on
+    or with, which a caption's passing "floor" or "handle" is not), narrowed to those matching `attrs`
+    best when any matches.
     Memoised by the scene and what is asked: the queries on one map name the same target and
     landmark kinds again and again (about 50 us per scene of 100 instances)."""
     lex = load_lexicon()
     fit = _fit_to(scene, cats)
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6 if cats else np.ones(len(fit), bool)
     if landmark and cats and not (fit >= 0.9).any():
-        said = kind & np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
-        kind = said if said.any() else kind
+        said = np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
+        kind = kind & said if (kind & said).any() else kind if kind.any() or not by_text else said
     rooms = {v for k, v in attrs if k == "room"}  # a landmark's room ("the kitchen table"), when one is there
     in_room = kind & np.array([r in rooms for r in scene.rooms], bool) if rooms else kind
     kind = in_room if in_room.any() or not cats else kind  # no category: a room's objects ("nearest the den")
@@ -319,7 +322,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     tb = boxes.take(targets)
     marks = []
     for cats, attrs in zip(rel.landmarks, rel.landmark_attrs):
-        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True))
+        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=rel.kind not in _CONTACT))
         if not len(rows):
             return None
         if rel.landmark_where in ("foot", "head"):
