@@ -62,6 +62,7 @@ class Lexicon:
     cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _correction_cache: dict[str, str] = field(default_factory=dict, repr=False)
+    _respelt: dict[str, str] = field(default_factory=dict, repr=False)
     _targets: frozenset[str] | None = field(default=None, repr=False)
     _purpose_cache: dict[tuple[str, float], tuple[int, ...]] = field(default_factory=dict, repr=False)
 
@@ -99,12 +100,20 @@ class Lexicon:
 
     def respell(self, text: str) -> str:
         """`text` with each misspelt word replaced by what it misspells (`spell`); everything
-        else, case and punctuation included, as written."""
+        else, case and punctuation included, as written. Memoised by the text: a request is respelt
+        for its parse, its reading and its spatial reading."""
+        hit = self._respelt.get(text)
+        if hit is not None:
+            return hit
+
         def fix(match: re.Match) -> str:
             word = match.group()
             fixed = self.spell([word.lower()])
             return word if fixed == [word.lower()] else " ".join(fixed)
-        return _TOKEN.sub(fix, text.replace("\u2019", "'"))
+        if len(self._respelt) >= 4096:
+            self._respelt.clear()
+        respelt = self._respelt[text] = _TOKEN.sub(fix, text.replace("\u2019", "'"))
+        return respelt
 
     def correct(self, token: str) -> str:
         """`token`, or the lexicon word it misspells:

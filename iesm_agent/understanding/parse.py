@@ -11,7 +11,7 @@ import re
 import sys
 import threading
 from dataclasses import dataclass, replace
-from functools import lru_cache
+from functools import lru_cache, reduce
 
 from ..errors import IesmError
 from ..lexicon import load_lexicon
@@ -147,11 +147,10 @@ class Structure:
         return next((k for k, w in enumerate(self.words) if w.start <= offset < w.start + len(w.text)), None)
 
 
+@lru_cache(maxsize=4096)  # (a request is normalised for its parse, its reading and its spatial reading)
 def normalise(text: str) -> str:
     """`text` with typed shorthand spelt out, so the parser reads it as the words it stands for."""
-    for pattern, words in _SHORTHAND:
-        text = pattern.sub(words, text)
-    return text
+    return reduce(lambda out, rule: rule[0].sub(rule[1], out), _SHORTHAND, text)
 
 
 @lru_cache(maxsize=4096)
