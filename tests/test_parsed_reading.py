@@ -362,3 +362,8 @@ def test_another_persons_things_are_not_the_target_and_where_they_left_them_is()
 def test_a_stand_in_after_a_wish_is_of_the_kind_the_exclusion_names():
     info = analyse_query("I'd like to read in the cream one, not the leather recliner")
     assert [c for c, w in info.targets.items() if w >= 1.0] == ["armchair"] and ("color", "beige") in info.attrs
+
+
+@pytest.mark.parametrize("typed, meant", [("midle", "middle"), ("nearset", "nearest"), ("betwen", "between")])
+def test_misspelt_relation_words_are_corrected(typed, meant):
+    assert load_lexicon().correct(typed) == meant

@@ -728,3 +728,24 @@ def test_a_landmark_of_no_kind_on_the_map_is_found_by_a_caption_naming_it(tmp_pa
     ])
     assert spatial(store, "the chair closest to the oven")[:1] == [2]
     assert spatial(store, "the chair farthest from the oven")[:1] == [3]
+
+
+def test_a_back_turned_to_a_thing_places_the_viewer_by_it():
+    assert parse_query("With my back to the wardrobe, take me to the lamp on the left").viewer_at == ("wardrobe",)
+    assert parse_query("facing away from the desk: the chair on the right").viewer_at == ("desk",)
+
+
+def test_the_room_a_target_is_named_with_bounds_a_farthest(tmp_path):
+    # "the kitchen chair farthest from the stove": not a chair in another room, farther still
+    store = make_store(tmp_path, [
+        box(1, "stove", (0.5, 3.5, 0.45), (0.6, 0.6, 0.9), room="kitchen"),
+        box(2, "chair", (1.0, 2.5, 0.45), (0.45, 0.45, 0.9), room="kitchen"),
+        box(3, "chair", (2.5, 1.0, 0.45), (0.45, 0.45, 0.9), room="kitchen"),
+        box(4, "chair", (8.0, 1.0, 0.45), (0.45, 0.45, 0.9), room="study"),
+    ])
+    assert spatial(store, "the kitchen chair farthest from the stove")[:1] == [3]
+
+
+def test_between_them_is_the_middle_one_of_the_targets_kind(room):
+    assert parse_query("the chair in between them").relations[0].kind == "middle"
+    assert spatial(room, "not the red ones, the chair in between them")[:1] == [11]

@@ -191,9 +191,11 @@ class Lexicon:
 
     @property
     def _spelling_targets(self) -> frozenset[str]:
-        """Lexicon words a misspelling may stand for (alphabetic, at least 3 letters)."""
+        """Lexicon words a misspelling may stand for (alphabetic, at least 3 letters), the words of
+        relations among them ("midle": middle)."""
         if self._targets is None:
-            self._targets = frozenset(w for w in self.vocab if w.isalpha() and len(w) >= 3)
+            words = self.vocab | self.words["relations"]
+            self._targets = frozenset(w for w in words if w.isalpha() and len(w) >= 3)
         return self._targets
 
     # -- phrases ----------------------------------------------------------------------------
@@ -426,7 +428,9 @@ def load_lexicon() -> Lexicon:
         words={name: frozenset(lang[name]) for name in
                ("skip", "boundaries", "abstract", "collective", "collective_strict", "weak_heads", "ignore",
                 "color_suffixes", "imitation_suffixes")}
-        | {"room_modifiers": frozenset(rooms["modifiers"])},
+        | {"room_modifiers": frozenset(rooms["modifiers"]),
+           "relations": frozenset(w for table in (lang["relation_cues"], lang["extremes"]) for cues in table.values()
+                                  for w in cues.replace("|", " ").split())},
         commands=(),
         lemmas=lemmas, vocab=vocab,
     )

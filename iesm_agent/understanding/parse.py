@@ -49,6 +49,9 @@ NOUNS = ("NOUN", "PROPN")
 #: without its apostrophe ("its a chair"); "w/ a lid", "sofa + cushions"
 _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|by)\b)"), r"\1t's"),
               (re.compile(r"\bw/ ?"), "with "), (re.compile(r" \+ "), " and "),
+              # one's back to a thing, or facing away from it: the viewer stands by it, looking into the room
+              (re.compile(r"\b(?:with )?(?:your|my|our) backs? (?:turned )?to\b|\bfacing away from\b", re.I),
+               "standing by"),
               # a word of nearness that takes its noun as a preposition does ("nearer the door"):
               # with its "to", which the tagger needs to read it as a word of place, not a noun
               (re.compile(r"\b((?:near|clos)e(?:r|st)) (?=(?:the|a|an|my|your|this|that|these|those)\b)",

@@ -8,24 +8,17 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from ..lexicon import ATTRIBUTE_KINDS, load_lexicon
+from ..lexicon import ATTRIBUTE_KINDS, load_lexicon, read_data
 from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark,
                       is_stranded, near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
-from .parse import NAMING, NOUNS, Word, normalise, parse_request
+from .parse import NAMING, NOUNS, STAND_INS, Word, normalise, parse_request
 from .query import analyse_query
 from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
-#: relation cues (word sequences, "|" between them) by the relation they name
-_CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in {
-    "on": "on top of|on|atop|onto|sitting on|resting on", "under": "under|underneath|beneath",
-    "below": "below", "above": "above|over", "near": "next to|beside|by|near|close to|adjacent to|at",
-    "closest": "closest|nearest|closer|nearer",
-    "farthest": "farthest|furthest|farther|further|far from|away from", "between": "between",
-    "corner": "corner", "middle": "middle|center|centre", "wall": "against|along", "left": "left",
-    "right": "right", "front": "front", "behind": "behind", "facing": "facing|face|looking at",
-    "from": "from", "with": "with", "opposite": "opposite|across from|across"}.items()
-    for cue in cues.split("|")}
+#: relation cues (word sequences) by the relation they name, from the lexicon's language file
+_CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in read_data("language.json")[
+    "relation_cues"].items() for cue in cues.split("|")}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
 #: sides with an axis of their own, whoever looks ("the north side of the desk", "the west crate")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
@@ -34,11 +27,7 @@ COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
 _CUES.update({cue: kind for kind in COMPASS for cue in (tuple(kind.split("-")), (kind.replace("-", ""),),
                                                          (kind.replace("-", "") + "ern",))})
 #: comparative and superlative words by the extreme they rank on
-_EXTREMES = {word: value for value, words in {
-    "large": "largest biggest larger bigger", "small": "smallest smaller tiniest", "tall": "tallest taller",
-    "short": "shortest shorter", "high": "highest higher upper uppermost topmost",
-    "low": "lowest lower lowermost bottommost", "wide": "widest wider longest longer"}.items()
-    for word in words.split()}
+_EXTREMES = {word: value for value, words in read_data("language.json")["extremes"].items() for word in words.split()}
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
@@ -596,6 +585,8 @@ class _Reader:
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
+        elif kind == "between" and {self.structure.words[k].text.lower() for k in self.cue_objects()} & STAND_INS:
+            rel = Relation("middle", value="group")  # "the bookcase in between them": the middle one of its kind
         elif self.located_by_pronoun(kind):
             return i
         elif kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target

@@ -453,9 +453,9 @@ def rank(prompt: Prompt) -> dict:
         marks = [c for r in sq.relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]
         kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
     targets = np.flatnonzero(kind & scene.is_candidate)
-    named_rooms = {r for r, w in reading.rooms.items() if w >= 1.0}
+    named_rooms = {r for r, w in reading.rooms.items() if w >= 1.0} or set(reading.rooms)
     in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
-    if in_room.any():  # "... in the attic": that room's instances
+    if in_room.any():  # "... in the attic", else "the kitchen chair ...": that room's instances
         targets = targets[in_room]
     said = (reading.room_phrase or "").lower()
     as_named = np.array([(scene.room_names[t] or "").lower() == said for t in targets], bool)
