@@ -327,7 +327,9 @@ def test_a_room_word_used_as_a_verb_names_no_room():
 
 
 def test_a_thing_before_a_hyphened_colour_suffix_is_a_colour():
-    assert analyse_query("the light-coloured rug").targets == {"rug": 1.0}
+    rug = analyse_query("the light-coloured rug")
+    assert rug.targets == {"rug": 1.0} and not {"ceiling lamp", "floor lamp"} & set(rug.afford)  # no wish for light
+    assert "light" not in analyse_query("a light-coloured one by the window").targets
     assert analyse_query("pillows, any colour").targets == {"pillow": 1.0}  # no hyphen: the pillows themselves
 
 
