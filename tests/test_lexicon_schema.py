@@ -71,6 +71,8 @@ class Language(_File):
     lemmas: dict[str, str]
     color_suffixes: list[str]
     imitation_suffixes: list[str]
+    relation_cues: dict[str, list[Phrase]]
+    extremes: dict[str, list[str]]
 
 
 SCHEMAS = {"affordances.json": Affordances, "categories.json": Categories, "rooms.json": Rooms,

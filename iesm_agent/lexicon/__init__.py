@@ -430,7 +430,7 @@ def load_lexicon() -> Lexicon:
                 "color_suffixes", "imitation_suffixes")}
         | {"room_modifiers": frozenset(rooms["modifiers"]),
            "relations": frozenset(w for table in (lang["relation_cues"], lang["extremes"]) for cues in table.values()
-                                  for w in cues.replace("|", " ").split())},
+                                  for cue in cues for w in cue.split())},
         commands=(),
         lemmas=lemmas, vocab=vocab,
     )

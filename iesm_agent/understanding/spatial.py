@@ -18,7 +18,7 @@ from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
 #: relation cues (word sequences) by the relation they name, from the lexicon's language file
 _CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in read_data("language.json")[
-    "relation_cues"].items() for cue in cues.split("|")}
+    "relation_cues"].items() for cue in cues}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
 #: sides with an axis of their own, whoever looks ("the north side of the desk", "the west crate")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
@@ -27,7 +27,7 @@ COMPASS.update({f"{a}-{b}": (COMPASS[b][0] / 2 ** 0.5, COMPASS[a][1] / 2 ** 0.5)
 _CUES.update({cue: kind for kind in COMPASS for cue in (tuple(kind.split("-")), (kind.replace("-", ""),),
                                                          (kind.replace("-", "") + "ern",))})
 #: comparative and superlative words by the extreme they rank on
-_EXTREMES = {word: value for value, words in read_data("language.json")["extremes"].items() for word in words.split()}
+_EXTREMES = {word: value for value, words in read_data("language.json")["extremes"].items() for word in words}
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
