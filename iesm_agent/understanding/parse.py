@@ -59,7 +59,7 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
               # or, typed without articles, between two nouns ("stool closest window")
               (re.compile(r"\b((?!(?:the|a|an|my|your|this|that|these|those|its|our|their)\b)[a-z]+ "
                           r"(?:near|clos)e(?:r|st)) (?=(?!(?:to|from|of|one|ones|by)\b)[a-z]+\b)", re.IGNORECASE),
-               r"\1 to "),  # and its noun with an article ("closest to window": "to" read as a verb's)
+               r"\1 to "),  # and its noun with an article (in "nearer to sofa" the tagger reads "to" as a verb's)
               (re.compile(r"\b((?:near|clos)e(?:r|st) to) (?=(?!(?:the|a|an|my|your|this|that|these|those|its|our|their"
                           r"|it|them|me|you|us|him|her)\b)[a-z]+\b)", re.IGNORECASE), r"\1 the "))
 #: a leading clause that rules out before the request ("Not the green kettle: the steel one"), to its
@@ -289,15 +289,13 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "request", next((lefts[k - 1].i for k in range(1, len(lefts))
                                 if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
-    if subject is not None and (subject.lower_ in _PERSONAL or any(  # "my ankles are sore": about the speaker
-            c.dep_ == "poss" and c.lower_ in _PERSONAL for c in subject.children)):
+    if subject is not None and (subject.lower_ in _PERSONAL or _a_persons(subject)):  # "my ankles are sore"
         # "I'm by the piano and I want ...": where the speaker is, not where to go
         found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
-        if found is not None and (any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in doc[found].children)
-                                  or doc[found].head.lemma_ in _ACTIVITY_VERBS or _made(doc[found])):
+        if found is not None and (_a_persons(doc[found]) or doc[found].head.lemma_ in _ACTIVITY_VERBS
+                                  or _made(doc[found])):
             found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
-        if found is None and any(c.dep_ in ("nsubj", "dobj") and any(
-                g.dep_ == "poss" and g.lower_ in _PERSONAL for g in c.children) for c in root.children):
+        if found is None and any(c.dep_ in ("nsubj", "dobj") and _a_persons(c) for c in root.children):
             # where a thing of the speaker's is ("my glasses are on the bookcase", "I left my umbrella by the stairs")
             found = _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
         return ("request" if question else "personal"), found
@@ -326,6 +324,11 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
         and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
         None)
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
+
+
+def _a_persons(token) -> bool:
+    """True when `token` has a person's possessive ("my keys", "his homework", "my son")."""
+    return any(c.dep_ == "poss" and c.lower_ in _PERSONAL for c in token.children)
 
 
 def _place_of(heads) -> int | None:
@@ -393,7 +396,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     the target of a clause it governs ("I want to dust the frame"), where a verb of placing puts its
     object, by the speaker ("let me set the tray on the stool": the stool); `clauses_only`: only the last."""
     doer = next((c for c in verb.children if c.dep_ == "nsubj"), None)  # a person: not "whatever puts files on paper"
-    person = doer is None or doer.lower_ in _PERSONAL | {"you"} or any(g.lower_ in _PERSONAL for g in doer.children)
+    person = doer is None or doer.lower_ in _PERSONAL | {"you"} or _a_persons(doer)  # ("my son")
     if verb.lemma_ in _PLACING_VERBS and person and any(c.dep_ == "dobj" for c in verb.children) \
             and (placed := _place_of([verb])) is not None:
         return placed

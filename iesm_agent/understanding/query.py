@@ -206,7 +206,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     start, end = structure.request
     tokens = [_Token(token, start + at) for token, at in lex.token_offsets(corrected[start:end])]
     marker = next(((i, i + len(words)) for i in range(1, len(tokens)) for words in _EXCLUSIONS
-                   if tuple(tokens[i:i + len(words)]) == words and (words[0] != "than" or "rather" in tokens[:i])), None)
+                   if tuple(tokens[i:i + len(words)]) == words and (words[0] != "than" or "rather" in tokens[:i])),
+                  None)
     ruled_out = [] if structure.excluded is None else [  # "Not the green kettle: ..."
         analyse_query(" ".join(lex.tokens(corrected[slice(*structure.excluded)])[1:]))]
     if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the sill.")
@@ -227,8 +228,9 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     surface = [t for t in tokens if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
-    spans = [s for s in lex.scan(lemmas, breaks) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)  # "light-coloured":
-             or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]  # not a lamp
+    # a thing's name right before a hyphened colour suffix is a colour ("light-coloured": no lamp)
+    spans = [s for s in lex.scan(lemmas, breaks) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
+             or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]
              or corrected[surface[s.end].at - 1] != "-"]
     return _Reading(corrected, structure, surface, lemmas, spans, preamble, ruled_out)
 
@@ -310,7 +312,6 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                                         for s in reading.spans)
     for s in reading.spans:
         in_target = target.start <= s.start and s.end <= target.end
-        word = structure.index_at(surface[s.start].at)  # the parse's word under the span's first token
         if s is head or s.has("gen") and in_target:  # a class noun's words too: a label may say it ("bucket")
             info.target_phrase = " ".join(surface[s.start:s.end])
             info.head_words = frozenset(lemmas[s.start:s.end])
@@ -324,6 +325,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                 _add_entry(afford, lex.generic[info.generic], 1.0)
                 info.purpose = True
             continue
+        word = structure.index_at(surface[s.start].at)  # the parse's word under the span's first token
         if s.has("room") and not (in_target and s.has("cat")) and not (  # "where I want to lounge": no room
                 word is not None and structure.words[word].pos == "VERB" and structure.children(word, "aux", "nsubj")):
             if _outside_target(structure, surface, s, target, described, place_ok=True) \

@@ -471,13 +471,13 @@ class _Reader:
     def facing(self, i: int) -> int:
         """The viewpoint of a cue ending before `i` ("facing the wardrobe"). When the parse's target lies in a
         viewpoint clause a comma or colon closes ("facing the window, the shelf on the left"), the target is the
-        first free category after the comma that no preposition or verb takes; with none ("facing the
+        first free category after that mark that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""
         at, st = self.target_at, self.structure
         ends = [k for k in (self.corrected.find(c, self.offsets[i - 1]) for c in ",:;") if k >= 0]
-        comma = -1 if at is None or at < i or not ends else min(ends)  # where the clause ends
-        if comma >= 0 and self.offsets[at] < comma:
-            after = next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > comma
+        end = -1 if at is None or at < i or not ends else min(ends)  # where the clause ends
+        if end >= 0 and self.offsets[at] < end:
+            after = next((j for j in sorted(self.cat_at) if j not in self.used and self.offsets[j] > end
                           and self.words[j] is not None
                           and st.words[self.noun_of(self.words[j])].dep not in ("pobj", "dobj")), None)
             if after is not None:

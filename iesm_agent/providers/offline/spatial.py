@@ -137,7 +137,10 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     kind = fit >= 0.9 if (fit >= 0.9).any() else fit >= 0.6 if cats else np.ones(len(fit), bool)
     if landmark and cats and not (fit >= 0.9).any():
         said = np.array([any(_words(q) <= words for q in cats) for words in scene.words], bool)
-        kind = kind & said if (kind & said).any() else kind if kind.any() or not by_text else said
+        if (kind & said).any():
+            kind = kind & said
+        elif by_text and not kind.any():
+            kind = said
     rooms = {v for k, v in attrs if k == "room"}  # a landmark's room ("the kitchen table"), when one is there
     in_room = kind & np.array([r in rooms for r in scene.rooms], bool) if rooms else kind
     kind = in_room if in_room.any() or not cats else kind  # no category: a room's objects ("nearest the den")
