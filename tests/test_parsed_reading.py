@@ -369,3 +369,21 @@ def test_a_stand_in_after_a_wish_is_of_the_kind_the_exclusion_names():
 @pytest.mark.parametrize("typed, meant", [("midle", "middle"), ("nearset", "nearest"), ("betwen", "between")])
 def test_misspelt_relation_words_are_corrected(typed, meant):
     assert load_lexicon().correct(typed) == meant
+
+
+@pytest.mark.parametrize("text, target", [
+    ("I want to hang this coat up, so any hook will do", "hook"),  # the subject of a verb of sufficing
+    ("my back aches, so the recliner by the fireplace", "recliner"),  # a verbless phrase after "so"
+])
+def test_what_will_do_after_so_names_the_target(text, target):
+    assert _target(text) == target
+
+
+@pytest.mark.parametrize("text, lacking", [
+    ("I want to warm up my soup without using the stove", "stove"),  # what the speaker would rather not use
+    ("the shelf with no vase on it", "vase"),
+    ("take me to the armchair without a blanket on it", "blanket"),
+])
+def test_a_thing_said_to_be_absent_or_not_used_is_never_the_target(text, lacking):
+    info = analyse_query(text)
+    assert lacking in info.excluded_targets and info.targets.get(lacking, 0.0) < 1.0

@@ -749,3 +749,17 @@ def test_the_room_a_target_is_named_with_bounds_a_farthest(tmp_path):
 def test_between_them_is_the_middle_one_of_the_targets_kind(room):
     assert parse_query("the chair in between them").relations[0].kind == "middle"
     assert spatial(room, "not the red ones, the chair in between them")[:1] == [11]
+
+
+@pytest.mark.parametrize("text", ["the chair between the other two", "the chair in the middle of the others"])
+def test_the_others_of_its_kind_make_a_middle_one(room, text):
+    assert parse_query(text).relations[0].kind == "middle"
+    assert spatial(room, text)[:1] == [11]
+
+
+def test_a_thing_said_to_be_absent_negates_the_relation(room):
+    # both nightstands carry a lamp here; the desk carries a box under it, not on it
+    assert [(r.kind, r.negated) for r in parse_query("the nightstand with no lamp on it").relations] == [("with", True)]
+    assert parse_query("the chair without a cushion").relations[0].negated
+    assert not parse_query("the chair with a cushion").relations[0].negated
+    assert not parse_query("I want tea without boiling the kettle").relations

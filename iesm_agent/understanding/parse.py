@@ -25,6 +25,8 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 #: words that stand for a target named elsewhere ("the one on the left", "take me to it")
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
+#: demonstratives that point at a thing ("so that lamp"), whatever the tagger calls them
+_POINTING = frozenset({"that", "this", "these", "those"})
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
@@ -115,6 +117,7 @@ class Structure:
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
     kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
+    lacking: frozenset[int] = frozenset()  # nouns said to be absent or done without ("with no chairs", "without the oven")
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -221,7 +224,10 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
     kind = next((t.i for t in reversed(doc[:target]) if t.pos_ in NOUNS and t.dep_ in NAMING), None) \
         if target is not None and doc[target].lower_ in ("one", "ones") else None  # "I need a mug; the blue ones"
-    return Structure(words, target, phrase, request, context, leaving, text=text, kind=kind)
+    lacking = frozenset(t.i for w in doc if w.lower_ == "without" for t in w.subtree if t.pos_ in NOUNS) | frozenset(
+        t.i for t in doc if t.pos_ in NOUNS and t.head.lower_ == "with" and any(c.lower_ == "no" for c in t.children))
+    return Structure(words, target, phrase, request, context, leaving, text=text, kind=kind,
+                     lacking=lacking - {target})
 
 
 def _wished_portion(token) -> bool:
@@ -314,16 +320,26 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a
-    colon, hung on the root or the target ("the far end of the bench, that stool"), or as a phrase with no
-    verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"): that noun."""
+    colon, hung on the root or the target ("the far end of the bench, that stool"), as a phrase with no
+    verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"), or as the subject
+    of a verb of sufficing there ("so any lamp will do"): that noun."""
     said = next((t.i for t in sent if t.pos_ in NOUNS and (
         t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
-            c.dep_ == "det" and c.lower_ in ("that", "this") and c.i > sent.start and c.nbor(-1).text in (",", ":")
+            c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
             for c in t.children)
-        or t.dep_ in ("dep", "dobj", "appos") and t.left_edge.i > sent.start
-        and t.doc[t.left_edge.i - 1].lower_ in ("so", ";", ":"))),
+        or _after_so(t, sent) and (t.dep_ in ("dep", "dobj", "appos") or any(c.dep_ == "det" or c.lower_ in _POINTING for c in t.lefts for c in c.subtree) and (
+            t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
+            or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice"))))),
         None)
     return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
+
+
+def _after_so(token, sent) -> bool:
+    """True when the phrase of `token` follows "so", a semicolon or a colon in `sent` ("so any lamp
+    will do", "; the one by the door"), or begins with "so" (a phrase the parser took for a clause)."""
+    first = token.left_edge
+    return first.lower_ == "so" and first.i > sent.start or first.i > sent.start and (
+        token.doc[first.i - 1].lower_ in ("so", ";", ":"))
 
 
 def _a_persons(token) -> bool:

@@ -326,6 +326,9 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                 info.purpose = True
             continue
         word = structure.index_at(surface[s.start].at)  # the parse's word under the span's first token
+        if word in structure.lacking and not in_target:  # "without using the hob", "with no lamp": never the target
+            info.excluded_targets |= frozenset(c for c in s.values("cat") if c not in _UNSPECIFIC)
+            continue
         if s.has("room") and not (in_target and s.has("cat")) and not (  # "where I want to lounge": no room
                 word is not None and structure.words[word].pos == "VERB" and structure.children(word, "aux", "nsubj")):
             if _outside_target(structure, surface, s, target, described, place_ok=True) \

@@ -36,6 +36,8 @@ _ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, 
 #: relations a side or middle word names, also made superlative ("rightmost")
 _SIDES = frozenset({"left", "right", "front", "middle"})
 #: words that negate the relation that follows ("not on the table", "isn't in the corner")
+#: nouns that stand for the rest of a group ("between the others")
+_GROUP_WORDS = frozenset({"others", "rest"})
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
@@ -181,6 +183,12 @@ class _Reader:
             return any(st.words[d].text.lower() == "this" for d in st.children(word, "det"))
         return self.cat_at[j].values("cat") == self.cat_at[at].values("cat")
 
+    def of_the_group(self, k: int) -> bool:
+        """True when the parsed word `k` stands for the others of the target's kind: a pronoun, a
+        number or "the others" ("between them", "between the other two", "the middle of the three")."""
+        word = self.structure.words[k]
+        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | _GROUP_WORDS
+
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
         st = self.structure
@@ -323,6 +331,7 @@ class _Reader:
             if at is None:
                 return self.room_landmark(rel, pos)
             self.used.add(at)
+            rel.negated = rel.negated or self.words[at] in self.structure.lacking  # "with no lamp on it"
             whole = self.whole_of(at)
             if whole is not None:  # "on the top shelf of the bookcase": in the bookcase, which holds its shelves
                 self.parts.add(at)
@@ -449,6 +458,10 @@ class _Reader:
             return i + 1
         if kind == "from":
             return self.ordinal_from(i, nxt)
+        if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head not in (
+                st.target, *(k for k, w in enumerate(st.words) if w.pos in ("VERB", "AUX")))):
+            return i  # "without unlocking my phone": not done; "above the bed without the laptop": the bed's
+
         if kind == "facing":
             return self.facing(i)
         if kind in ("corner", "middle") and nxt == "of":
@@ -515,7 +528,7 @@ class _Reader:
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
         objects |= {o for k in objects if self.span_of.get(k) is None for p in st.children(k, "prep")
                     if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
-        if kind == "middle" and any(self.points_back(k) or st.words[k].pos in ("NUM", "PRON") for k in objects):
+        if kind == "middle" and any(self.points_back(k) or self.of_the_group(k) for k in objects):
             rel.value = "group"
         elif any(self.span_of.get(k) is not None for k in objects):
             self.landmark(rel, i)
@@ -585,7 +598,7 @@ class _Reader:
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
                 self.landmark(rel, i)
-        elif kind == "between" and {self.structure.words[k].text.lower() for k in self.cue_objects()} & STAND_INS:
+        elif kind == "between" and any(self.of_the_group(k) for k in self.cue_objects()):
             rel = Relation("middle", value="group")  # "the bookcase in between them": the middle one of its kind
         elif self.located_by_pronoun(kind):
             return i
@@ -607,7 +620,8 @@ class _Reader:
         ("the cloth for the glasses"): then there is no named target."""
         toks, out, taken = self.toks, self.out, self.taken
         target = self.target_at if self.target_at is not None else next(
-            (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None), None)
+            (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
+             and self.words[j] not in self.structure.lacking), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         info = analyse_query(self.text)
