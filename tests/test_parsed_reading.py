@@ -387,3 +387,9 @@ def test_what_will_do_after_so_names_the_target(text, target):
 def test_a_thing_said_to_be_absent_or_not_used_is_never_the_target(text, lacking):
     info = analyse_query(text)
     assert lacking in info.excluded_targets and info.targets.get(lacking, 0.0) < 1.0
+
+
+def test_a_use_word_described_by_colour_or_material_names_a_thing():
+    thing = analyse_query("take me to the silver metal timer")  # a kitchen timer: a thing to find
+    assert thing.unknown_target == "timer" and not thing.afford
+    assert analyse_query("I need to set a timer").afford  # what to do: whatever keeps time
