@@ -325,6 +325,8 @@ class _Reader:
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
                 and self.structure.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
             at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
+        elif self.place_for_use(rel, pos):
+            return True
         else:
             at = self.next_cat(pos)
             at = self.antecedent(objects) if at is None else at
@@ -346,6 +348,24 @@ class _Reader:
         rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
         rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
         self.last_landmark_end = end
+        return True
+
+    def place_for_use(self, rel: Relation, pos: int) -> bool:
+        """A place said by what a person does there ("above where we eat"): the kinds that serve it, as
+        the landmark of `rel`; False when no "where" clause with a pronoun subject and no thing named is at `pos`."""
+        st, where = self.structure, self.word(pos) if pos < len(self.toks) else None
+        if where is None or self.toks[pos] != "where" or not any(
+                st.words[k].pos == "PRON" for k in st.children(where.head, "nsubj")):
+            return False
+        clause = [j for j in range(pos + 1, len(self.toks)) if self.words[j] is not None
+                  and st.dominates(where.head, self.words[j])]
+        use = analyse_query(" ".join(self.toks[j] for j in clause))
+        kinds = tuple(c for c, w in use.afford.items() if w >= 1.0)
+        if use.named or not kinds:
+            return False
+        rel.landmarks.append(kinds)
+        rel.landmark_attrs.append(())
+        self.last_landmark_end = clause[-1] + 1
         return True
 
     def room_landmark(self, rel: Relation, pos: int) -> bool:
