@@ -351,7 +351,7 @@ class _Reader:
         return True
 
     def place_for_use(self, rel: Relation, pos: int) -> bool:
-        """A place said by what a person does there ("above where we eat"): the kinds that serve it, as
+        """A place said by what a person does there ("the clock above where I work"): the kinds that serve it, as
         the landmark of `rel`; False when no "where" clause with a pronoun subject and no thing named is at `pos`."""
         st, where = self.structure, self.word(pos) if pos < len(self.toks) else None
         if where is None or self.toks[pos] != "where" or not any(
