@@ -393,3 +393,8 @@ def test_a_use_word_described_by_colour_or_material_names_a_thing():
     thing = analyse_query("take me to the silver metal timer")  # a kitchen timer: a thing to find
     assert thing.unknown_target == "timer" and not thing.afford
     assert analyse_query("I need to set a timer").afford  # what to do: whatever keeps time
+
+
+@pytest.mark.parametrize("text, target", [("stool beside oven", "stool"), ("stool under counter", "stool")])
+def test_a_first_noun_the_tagger_reads_as_a_verb_is_the_target_of_a_telegraphic_request(text, target):
+    assert _target(text) == target

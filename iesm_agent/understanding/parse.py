@@ -270,6 +270,9 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
         return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
+    if subject is None and root.i == first.i and root.pos_ == "VERB" and _a_thing(root) and not any(
+            c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children):
+        return "request", root.i  # "clock near window": a first noun read as a verb, with no object
     command = _command(doc, sent)
     if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
         found = command[1]
@@ -340,6 +343,12 @@ def _after_so(token, sent) -> bool:
     first = token.left_edge
     return first.lower_ == "so" and first.i > sent.start or first.i > sent.start and (
         token.doc[first.i - 1].lower_ in ("so", ";", ":"))
+
+
+def _a_thing(token) -> bool:
+    """True when the lexicon knows `token`'s word (as written or its lemma) as a category of things."""
+    phrases = load_lexicon().phrases
+    return any(k == "cat" for w in {token.lower_, token.lemma_} for k, _ in phrases.get((w,), ()))
 
 
 def _a_persons(token) -> bool:
