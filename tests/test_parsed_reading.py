@@ -398,3 +398,8 @@ def test_a_use_word_described_by_colour_or_material_names_a_thing():
 @pytest.mark.parametrize("text, target", [("stool beside oven", "stool"), ("stool under counter", "stool")])
 def test_a_first_noun_the_tagger_reads_as_a_verb_is_the_target_of_a_telegraphic_request(text, target):
     assert _target(text) == target
+
+
+def test_a_colour_the_parser_takes_for_the_head_of_a_coordination_leaves_it_to_the_thing():
+    info = analyse_query("the green one, not the grey or the brown sofas")
+    assert [c for c, w in info.targets.items() if w >= 1.0] == ["sofa"] and ("color", "green") in info.attrs

@@ -296,7 +296,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         # superlative the parser took for a modifier ("stool nearest fridge"), the noun before the superlative
         lefts = list(root.lefts)
         return "request", next((lefts[k - 1].i for k in range(1, len(lefts))
-                                if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), root.i)
+                                if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), _past_looks(root))
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and (subject.lower_ in _PERSONAL or _a_persons(subject)):  # "my ankles are sore"
         # "I'm by the piano and I want ...": where the speaker is, not where to go
@@ -343,6 +343,14 @@ def _after_so(token, sent) -> bool:
     first = token.left_edge
     return first.lower_ == "so" and first.i > sent.start or first.i > sent.start and (
         token.doc[first.i - 1].lower_ in ("so", ";", ":"))
+
+
+def _past_looks(token) -> int:
+    """`token`'s index; for a colour or material the parser took for the head of a coordination ("the
+    black or the white chairs"), the thing joined to it."""
+    kinds = {k for k, _ in load_lexicon().phrases.get((token.lower_,), ())}
+    return next((c.i for c in token.children if c.dep_ == "conj" and c.pos_ in NOUNS and _a_thing(c)), token.i) \
+        if kinds and kinds <= {"color", "material"} else token.i
 
 
 def _a_thing(token) -> bool:
