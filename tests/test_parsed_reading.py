@@ -403,3 +403,8 @@ def test_a_first_noun_the_tagger_reads_as_a_verb_is_the_target_of_a_telegraphic_
 def test_a_colour_the_parser_takes_for_the_head_of_a_coordination_leaves_it_to_the_thing():
     info = analyse_query("the green one, not the grey or the brown sofas")
     assert [c for c, w in info.targets.items() if w >= 1.0] == ["sofa"] and ("color", "green") in info.attrs
+
+
+def test_a_thing_ruled_out_as_a_place_gives_a_stand_in_its_kind():
+    info = analyse_query("I'd like to nap, though not on the checked sofa: the plain velvet one")
+    assert [c for c, w in info.targets.items() if w >= 1.0] == ["sofa"] and ("material", "velvet") in info.attrs

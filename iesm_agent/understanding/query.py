@@ -213,7 +213,8 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     if marker is not None:  # to the end of its sentence ("the blue mug, not the red. It's on the sill.")
         end = min((k for k in clause_breaks(corrected, [(t, t.at) for t in tokens], SENTENCE_MARK) if k > marker[1]),
                   default=len(tokens))
-        ruled_out.append(analyse_query(" ".join(tokens[marker[1]:end])))
+        after = marker[1] + (marker[1] < end and tokens[marker[1]] in _PLACE_PREPOSITIONS | {"on", "at"})
+        ruled_out.append(analyse_query(" ".join(tokens[after:end])))  # "not in the wingback": the wingback
         tokens = tokens[:marker[0]] + tokens[end:]
     preamble = [t for a, b in structure.context for t in lex.tokens(corrected[a:b])]
     # a request phrase ("go to", "take me to", "find") after at least two words: what comes before it only says why
