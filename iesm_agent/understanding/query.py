@@ -235,10 +235,9 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
              or corrected[surface[s.end].at - 1] != "-"]
     # a use's word as the target noun with a colour or material ("a red leather volume") names a thing, not a use
     looks = {surface[i].at for s in spans if s.has("color") or s.has("material") for i in range(s.start, s.end)}
-    target = structure.target
-    spans = [s for s in spans if not (s.end - s.start == 1 and {k for k, _ in s.kinds} == {"cue"} and target is not None
-                                      and structure.index_at(surface[s.start].at) == target and any(
-            structure.words[k].start in looks for k in structure.children(target, "amod", "compound", "nmod")))]
+    if any(structure.words[k].start in looks for k in structure.children(structure.target, "amod", "compound", "nmod")):
+        spans = [s for s in spans if not (s.end - s.start == 1 and {k for k, _ in s.kinds} == {"cue"}
+                                          and structure.index_at(surface[s.start].at) == structure.target)]
     return _Reading(corrected, structure, surface, lemmas, spans, preamble, ruled_out)
 
 
