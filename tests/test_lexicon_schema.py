@@ -82,6 +82,9 @@ class Language(_File):
     auxiliaries: list[str]
     nearness: list[str]
     use_verbs: list[str]
+    places: list[str]
+    exclusions: list[Phrase]
+    ordinals: dict[str, list[str]]
 
 
 SCHEMAS = {"affordances.json": Affordances, "categories.json": Categories, "rooms.json": Rooms,

@@ -29,8 +29,6 @@ INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "
 #: words between a clause's noun and its preposition that are not verb forms ("is", "has been", "right above", "hung")
 _AUXILIARIES = frozenset(read_data("language.json")["auxiliaries"])
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
-#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
-SIDE_NOUNS = frozenset({"left", "right", "front"})
 #: words of nearness after which a room is a place the target is near, not the room it is in
 NEARNESS = frozenset(read_data("language.json")["nearness"])
 
@@ -54,8 +52,8 @@ def clause_final_words(text: str) -> frozenset[str]:
 def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
     """True when the preposition ending at `toks[end - 1]` has no object: the clause ends there or a
     pronoun for the target follows ("on it", "to the left of it")."""
-    if toks[end - 1] in SIDE_NOUNS:
-        if end >= len(toks) or toks[end] != "of":
+    if toks[end - 1] in ("left", "right", "front"):
+        if end >= len(toks) or toks[end] != "of":  # a side word is a noun then ("the lamp on the right")
             return False
         end += 1  # "to the left of it"
     return end >= len(toks) or toks[end] in BACK_REFERENCES or toks[end - 1] in finals

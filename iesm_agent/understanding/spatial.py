@@ -31,12 +31,9 @@ _EXTREMES = {word: value for value, words in read_data("language.json")["extreme
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
-_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
-             "fifth": 5, "5th": 5, "last": -1}
+_ORDINALS = {word: int(n) for n, words in read_data("language.json")["ordinals"].items() for word in words}
 #: relations a side or middle word names, also made superlative ("rightmost")
 _SIDES = frozenset({"left", "right", "front", "middle"})
-#: nouns that stand for the rest of a group ("between the others")
-_GROUP_WORDS = frozenset({"others", "rest"})
 #: words that negate the relation that follows ("not on the table", "isn't in the corner")
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
@@ -186,7 +183,7 @@ class _Reader:
         """True when the parsed word `k` stands for the others of the target's kind: a pronoun, a
         number or "the others" ("between them", "between the other two", "the middle of the three")."""
         word = self.structure.words[k]
-        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | _GROUP_WORDS
+        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | {"others", "rest"}
 
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
