@@ -28,9 +28,6 @@ STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 _POINTING = frozenset({"that", "this", "these", "those"})
 #: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
-#: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
-#: "make the bed"): what they make is no place to go
-_MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
 #: vessels that count out what the speaker wants ("a jug of lemonade"): the lemonade is wanted
 _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
@@ -232,11 +229,11 @@ def _wished_portion(token) -> bool:
 
 
 def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
-    """The sentence that makes the request: the last command, question or bare noun phrase that
-    names a target; else the first description ("This is a brown chair."), unless it only sets the
-    scene ("There's a chest in the hall.") before a statement of what the speaker wants ("I want the
-    pot on it"); else the last statement about the speaker that names one ("I want to dust the
-    frame"); never a sentence that continues an earlier one ("It stands by the desk.")."""
+    """The sentence that makes the request: the last command, question or bare noun phrase that names a target;
+    else the first description ("This is a brown chair."), unless it only sets the scene ("There's a chest in the
+    hall.") before a statement of what the speaker wants ("I want the pot on it"); else the last statement about the
+    speaker that names one ("I want to dust the frame"); never a sentence that continues an earlier one ("It stands
+    by the desk.")."""
     found = {wanted: [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
              for wanted in ("request", "description", "scene", "personal", "viewpoint")}
     said = sorted(found["description"] + found["scene"])
@@ -368,7 +365,7 @@ def _place_of(heads) -> int | None:
 def _made(token) -> bool:
     """True for the object of a verb of making that the request brings into being: no determiner,
     or an indefinite one ("bake a loaf", "brew coffee"), not a thing already there ("the bed")."""
-    return token.dep_ == "dobj" and token.head.lemma_ in _MAKING_VERBS \
+    return token.dep_ == "dobj" and token.head.lemma_ in ("make", "cook", "brew", "bake", "prepare") \
         and all(c.lower_ in ("a", "an", "some") for c in token.children if c.dep_ in ("det", "poss"))
 
 

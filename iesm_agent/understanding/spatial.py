@@ -51,10 +51,6 @@ _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "poi
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
 #: verbs of seeing after which "from" says where the viewer is
 _SEEING = frozenset({"seen", "viewed", "looked", "watching"}) | _LOOKING
-#: parse relations of a word that heads a relation's object ("on the piano [bench]")
-_PHRASE_HEADS = frozenset({"pobj", "dobj", "conj", "attr", "npadvmod"})
-#: relations that say nothing without a landmark
-_NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
 _LANDMARK_ATTRS = ("color", "material", "size")
 SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
@@ -243,7 +239,7 @@ class _Reader:
         st = self.structure
         owners = {self.cue_word, self.noun_of(self.cue_word)}
         owners |= set(st.children(owners, "prep"))
-        objects = set(st.children(owners, *_PHRASE_HEADS))
+        objects = set(st.children(owners, "pobj", "dobj", "conj", "attr", "npadvmod"))  # ("on the piano [bench]")
         return objects | set(st.children(objects, "conj"))
 
     def turned_to(self, k: int | None) -> bool:
@@ -647,7 +643,8 @@ class _Reader:
                 if not any(taken.get(r) for r in out.relations):
                     out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
         # a relation to a landmark the request does not name ("the nearest sofa") says nothing
-        out.relations = [r for r in out.relations if r.landmarks or r.kind not in _NEEDS_LANDMARK]
+        out.relations = [r for r in out.relations
+                         if r.landmarks or r.kind not in _LANDMARK_KINDS | {"closest", "farthest", "opposite"}]
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
