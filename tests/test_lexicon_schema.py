@@ -73,6 +73,18 @@ class Language(_File):
     imitation_suffixes: list[str]
     relation_cues: dict[str, list[Phrase]]
     extremes: dict[str, list[str]]
+    motion_verbs: list[str]
+    verb_openers: list[str]
+    motion_objects: list[str]
+    particles: list[str]
+    path_particles: list[str]
+    strandable: list[str]
+    auxiliaries: list[str]
+    nearness: list[str]
+    use_verbs: list[str]
+    places: list[str]
+    exclusions: list[Phrase]
+    ordinals: dict[str, list[str]]
 
 
 SCHEMAS = {"affordances.json": Affordances, "categories.json": Categories, "rooms.json": Rooms,

@@ -9,13 +9,12 @@ import re
 from functools import lru_cache
 from collections.abc import Collection
 
-from ..lexicon import Span
+from ..lexicon import Span, read_data
 
 #: pronouns that stand for the target inside its own relative clause ("... with a lamp next to it")
 BACK_REFERENCES = frozenset({"it", "them", "itself", "themselves"})
 #: prepositions a relative clause can leave at its end ("the shelf the vase stands on")
-STRANDABLE = frozenset({"on", "onto", "atop", "under", "underneath", "beneath", "below", "above", "over", "by",
-                        "beside", "near", "to", "of", "behind", "against", "opposite"})
+STRANDABLE = frozenset(read_data("language.json")["strandable"])
 #: nouns standing for an unnamed target ("the one by the door", "the thing on the shelf")
 TARGET_PRONOUNS = frozenset({"one", "ones", "thing", "things", "something", "object", "item", "stuff", "whatever"})
 #: most words between the clause's noun and its relation ("is sitting on top of", "has been hung above")
@@ -28,15 +27,10 @@ INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "
                     "left": "right", "right": "left", "front": "behind", "behind": "front", "opposite": "opposite"}
 
 #: words between a clause's noun and its preposition that are not verb forms ("is", "has been", "right above", "hung")
-_AUXILIARIES = frozenset({"is", "are", "was", "were", "be", "been", "being", "has", "have", "had", "right", "just",
-                          "directly", "usually", "always", "still", "now", "normally", "hung", "sat", "put", "set",
-                          "kept", "lay", "laid", "stuck", "stood", "leant"})
+_AUXILIARIES = frozenset(read_data("language.json")["auxiliaries"])
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
-#: side words that are nouns unless "of" follows ("the lamp on the right" has no landmark)
-SIDE_NOUNS = frozenset({"left", "right", "front"})
 #: words of nearness after which a room is a place the target is near, not the room it is in
-NEARNESS = frozenset({"near", "nearer", "nearest", "close", "closer", "closest", "next", "beside", "adjacent",
-                      "far", "farther", "farthest", "further", "furthest", "away"})
+NEARNESS = frozenset(read_data("language.json")["nearness"])
 
 
 def near_room(words: list[str], start: int, end: int, named: Collection[int]) -> bool:
@@ -58,8 +52,8 @@ def clause_final_words(text: str) -> frozenset[str]:
 def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
     """True when the preposition ending at `toks[end - 1]` has no object: the clause ends there or a
     pronoun for the target follows ("on it", "to the left of it")."""
-    if toks[end - 1] in SIDE_NOUNS:
-        if end >= len(toks) or toks[end] != "of":
+    if toks[end - 1] in ("left", "right", "front"):
+        if end >= len(toks) or toks[end] != "of":  # a side word is a noun then ("the lamp on the right")
             return False
         end += 1  # "to the left of it"
     return end >= len(toks) or toks[end] in BACK_REFERENCES or toks[end - 1] in finals

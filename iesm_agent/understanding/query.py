@@ -7,7 +7,7 @@ from dataclasses import MISSING, dataclass, field, fields
 from functools import lru_cache
 from types import MappingProxyType, SimpleNamespace
 
-from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon
+from ..lexicon import ATTRIBUTE_KINDS, Lexicon, Span, load_lexicon, read_data
 from .clauses import STRANDABLE, clause_final_words, clause_landmark, is_stranded, near_room
 from .motion import MOTION_VERBS, strip_motion
 from .parse import NOUNS, Structure, Word, normalise, parse_many, parse_request
@@ -18,8 +18,7 @@ _UNSPECIFIC = frozenset({"object"})
 #: weight of a category named outside the target phrase when the target names no known kind ("a spot for my cup")
 _THEME_WEIGHT = 0.35
 #: word sequences after which the query says what the target is NOT (the first after word 0; "than" after "rather")
-_EXCLUSIONS = (("rather", "than"), ("instead", "of"), ("other", "than"), ("apart", "from"), ("but", "not"),
-               ("not",), ("isn't",), ("isnt",), ("aren't",), ("arent",), ("except",), ("never",), ("than",))
+_EXCLUSIONS = tuple(tuple(p.split()) for p in read_data("language.json")["exclusions"])
 #: words that introduce a part or feature of the target ("with the torn flap")
 _PART_WORDS = frozenset({"with", "without", "has", "have", "having", "featuring", "wearing"})
 #: verbs of posture, said of a thing, say where it is ("it sits on the worktop"), not what to do there
@@ -235,10 +234,9 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
              or corrected[surface[s.end].at - 1] != "-"]
     # a use's word as the target noun with a colour or material ("a red leather volume") names a thing, not a use
     looks = {surface[i].at for s in spans if s.has("color") or s.has("material") for i in range(s.start, s.end)}
-    target = structure.target
-    spans = [s for s in spans if not (s.end - s.start == 1 and {k for k, _ in s.kinds} == {"cue"} and target is not None
-                                      and structure.index_at(surface[s.start].at) == target and any(
-            structure.words[k].start in looks for k in structure.children(target, "amod", "compound", "nmod")))]
+    if any(structure.words[k].start in looks for k in structure.children(structure.target, "amod", "compound", "nmod")):
+        spans = [s for s in spans if not (s.end - s.start == 1 and {k for k, _ in s.kinds} == {"cue"}
+                                          and structure.index_at(surface[s.start].at) == structure.target)]
     return _Reading(corrected, structure, surface, lemmas, spans, preamble, ruled_out)
 
 
@@ -258,10 +256,14 @@ def analyse_query(text: str) -> QueryInfo:
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
     info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
-    clause = _landmark_clauses(reading)
+    # token positions of relative clauses about a landmark whose preposition is stranded, from the landmark's noun to
+    # the preposition ("the cabinet [the printer sits on]")
+    surface, categories = reading.surface, {sp.start: sp for sp in reading.spans if sp.has("cat")}
+    starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
+              if token in STRANDABLE and is_stranded(surface, k + 1, clause_final_words(reading.text))}
+    clause = {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}
     # the target phrase: from the parse when it names a known kind, else from the word order
-    target = (_parsed_target(reading.structure, reading.surface, reading.spans)
-              or _ordered_target(lex, reading, clause))
+    target = _parsed_target(reading.structure, surface, reading.spans) or _ordered_target(lex, reading, clause)
     info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
     afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
@@ -283,7 +285,7 @@ def analyse_query(text: str) -> QueryInfo:
     top = max(afford.values(), default=1.0)
     info.afford = {c: w / top for c, w in afford.items()}
     left = reading.structure.leaving  # what the request wants out of, when it is a room ("get me out of the garage")
-    left = None if left is None else _surface_index(reading.surface, reading.structure.words[left])
+    left = None if left is None else _surface_index(surface, reading.structure.words[left])
     if not _named(info) and left is not None and any(s.has("room") and s.start <= left < s.end for s in reading.spans):
         info.targets[WAY_OUT] = 1.0  # "how do I leave the kitchen": the kitchen's door
         info.target_phrase = info.target_phrase or WAY_OUT
@@ -412,12 +414,3 @@ def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop
         return None
     return " ".join(surface[i] for i in range(start, end)
                     if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()) or None
-
-
-def _landmark_clauses(reading: _Reading) -> set[int]:
-    """Token positions of relative clauses about a landmark whose preposition is stranded: from
-    the landmark's noun to the preposition ("the cabinet [the printer sits on]")."""
-    surface, categories = reading.surface, {sp.start: sp for sp in reading.spans if sp.has("cat")}
-    starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
-              if token in STRANDABLE and is_stranded(surface, k + 1, clause_final_words(reading.text))}
-    return {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}

@@ -31,13 +31,10 @@ _EXTREMES = {word: value for value, words in read_data("language.json")["extreme
 #: nouns that place the target in height when they modify a noun ("the top drawer") or are the
 #: object of "on" or "at" with no "of" ("the one on top")
 _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
-_ORDINALS = {"first": 1, "1st": 1, "second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4,
-             "fifth": 5, "5th": 5, "last": -1}
+_ORDINALS = {word: int(n) for n, words in read_data("language.json")["ordinals"].items() for word in words}
 #: relations a side or middle word names, also made superlative ("rightmost")
 _SIDES = frozenset({"left", "right", "front", "middle"})
 #: words that negate the relation that follows ("not on the table", "isn't in the corner")
-#: nouns that stand for the rest of a group ("between the others")
-_GROUP_WORDS = frozenset({"others", "rest"})
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 #: relations that need a landmark after the cue (the others are read before this set is used)
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
@@ -45,8 +42,6 @@ _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
-#: verbs of seeing after which "from" says where the viewer is
-_SEEING = frozenset({"seen", "viewed", "looked", "watching"})  # with _LOOKING
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
@@ -54,16 +49,13 @@ _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
-#: parse relations of a word that heads a relation's object ("on the piano [bench]")
-_PHRASE_HEADS = frozenset({"pobj", "dobj", "conj", "attr", "npadvmod"})
-#: relations that say nothing without a landmark
-_NEEDS_LANDMARK = _LANDMARK_KINDS | {"closest", "farthest", "opposite"}
+#: verbs of seeing after which "from" says where the viewer is
+_SEEING = frozenset({"seen", "viewed", "looked", "watching"}) | _LOOKING
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
 _LANDMARK_ATTRS = ("color", "material", "size")
 SIZE_EXTREMES = {"small": "small", "large": "large", "tall": "tall", "short": "short"}
 #: "on" after these verbs states a use, not a place ("where can I work on my computer")
-_USE_VERBS = {"work", "sit", "lie", "sleep", "put", "place", "set", "eat", "write", "type", "read", "watch",
-              "rest", "stand", "step", "lean", "cook", "play", "chop", "cut", "iron", "do", "rely", "count"}
+_USE_VERBS = frozenset(read_data("language.json")["use_verbs"])
 
 
 @dataclass(eq=False)  # one statement of one request, told apart by identity (`_Reader.taken`)
@@ -187,7 +179,7 @@ class _Reader:
         """True when the parsed word `k` stands for the others of the target's kind: a pronoun, a
         number or "the others" ("between them", "between the other two", "the middle of the three")."""
         word = self.structure.words[k]
-        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | _GROUP_WORDS
+        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | {"others", "rest"}
 
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
@@ -247,7 +239,7 @@ class _Reader:
         st = self.structure
         owners = {self.cue_word, self.noun_of(self.cue_word)}
         owners |= set(st.children(owners, "prep"))
-        objects = set(st.children(owners, *_PHRASE_HEADS))
+        objects = set(st.children(owners, "pobj", "dobj", "conj", "attr", "npadvmod"))  # ("on the piano [bench]")
         return objects | set(st.children(objects, "conj"))
 
     def turned_to(self, k: int | None) -> bool:
@@ -345,8 +337,14 @@ class _Reader:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
             if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in ("foot", "head"):
                 rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of its length
-        rel.landmarks.append(tuple(kind))  # with the room said before it ("the living room bookcase")
-        rel.landmark_attrs.append(self.attrs_before(at) + self.room_at.get(at, ()))
+        attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
+        return self.add_landmark(rel, tuple(kind), attrs, end)
+
+    def add_landmark(self, rel: Relation, kinds: tuple[str, ...], attrs: tuple, end: int) -> bool:
+        """Add to `rel` a landmark of the categories `kinds` (none: a room's objects) described by `attrs`,
+        its phrase ending before token `end`; True."""
+        rel.landmarks.append(kinds)
+        rel.landmark_attrs.append(attrs)
         self.last_landmark_end = end
         return True
 
@@ -361,12 +359,7 @@ class _Reader:
                   and st.dominates(where.head, self.words[j])]
         use = analyse_query(" ".join(self.toks[j] for j in clause))
         kinds = tuple(c for c, w in use.afford.items() if w >= 1.0)
-        if use.named or not kinds:
-            return False
-        rel.landmarks.append(kinds)
-        rel.landmark_attrs.append(())
-        self.last_landmark_end = clause[-1] + 1
-        return True
+        return bool(kinds) and not use.named and self.add_landmark(rel, kinds, (), clause[-1] + 1)
 
     def room_landmark(self, rel: Relation, pos: int) -> bool:
         """A room said right after a word of nearness ("the stool closest to the garage") as the
@@ -374,10 +367,7 @@ class _Reader:
         start = next((j for j in self.near_rooms if pos <= j <= pos + 1), None)
         if start is None or rel.kind not in ("near", "closest", "farthest"):
             return False
-        rel.landmarks.append(())
-        rel.landmark_attrs.append(self.room_at[self.near_rooms[start]])
-        self.last_landmark_end = self.near_rooms[start]
-        return True
+        return self.add_landmark(rel, (), self.room_at[self.near_rooms[start]], self.near_rooms[start])
 
     def named_side(self, i: int) -> int:
         """The position after the category or room phrase at `i`; a phrase other than the target's that
@@ -478,10 +468,9 @@ class _Reader:
             return i + 1
         if kind == "from":
             return self.ordinal_from(i, nxt)
-        if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head not in (
-                st.target, *(k for k, w in enumerate(st.words) if w.pos in ("VERB", "AUX")))):
+        if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head != st.target
+                                      and st.words[cue.head].pos not in ("VERB", "AUX")):
             return i  # "without unlocking my phone": not done; "above the bed without the laptop": the bed's
-
         if kind == "facing":
             return self.facing(i)
         if kind in ("corner", "middle") and nxt == "of":
@@ -584,7 +573,7 @@ class _Reader:
         settee", "From the pantry arch, ..."; not "a pipe runs from the boiler to the sink")."""
         if self.pending_ordinal is None:
             st, k = self.structure, self.cue_word
-            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING | _LOOKING or self.opens_clause(k)):
+            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING or self.opens_clause(k)):
                 self.viewer_landmark(Relation("from"), i)
         elif nxt in ("left", "right"):
             self.pending_ordinal.value = nxt
@@ -624,8 +613,7 @@ class _Reader:
             return i
         elif kind in _LANDMARK_KINDS:  # "with a cracked top", "silver on its frame": a part of the target
             j = self.next_cat(i)
-            if j is not None and set(self.lemmas[self.cat_at[j].start:self.cat_at[j].end]) <= \
-                    self.lex.words["weak_heads"]:
+            if j is not None and set(self.lemmas[j:self.cat_at[j].end]) <= self.lex.words["weak_heads"]:
                 self.used.add(j)
                 return i
             if not self.landmark(rel, i):
@@ -655,7 +643,8 @@ class _Reader:
                 if not any(taken.get(r) for r in out.relations):
                     out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
         # a relation to a landmark the request does not name ("the nearest sofa") says nothing
-        out.relations = [r for r in out.relations if r.landmarks or r.kind not in _NEEDS_LANDMARK]
+        out.relations = [r for r in out.relations
+                         if r.landmarks or r.kind not in _LANDMARK_KINDS | {"closest", "farthest", "opposite"}]
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
