@@ -751,7 +751,7 @@ def test_between_them_is_the_middle_one_of_the_targets_kind(room):
     assert spatial(room, "not the red ones, the chair in between them")[:1] == [11]
 
 
-@pytest.mark.parametrize("text", ["the chair between the other two", "the chair in the middle of the others"])
+@pytest.mark.parametrize("text", ["the chair between the remaining two", "the chair in the middle of the others"])
 def test_the_others_of_its_kind_make_a_middle_one(room, text):
     assert parse_query(text).relations[0].kind == "middle"
     assert spatial(room, text)[:1] == [11]

@@ -333,15 +333,20 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
 def _past_looks(token) -> int:
     """`token`'s index; for a colour or material the parser took for the head of a coordination ("the
     black or the white chairs"), the thing joined to it."""
-    kinds = {k for k, _ in load_lexicon().phrases.get((token.lower_,), ())}
+    kinds = _lexicon_kinds(token.lower_)
     return next((c.i for c in token.children if c.dep_ == "conj" and c.pos_ in NOUNS and _a_thing(c)), token.i) \
         if kinds and kinds <= {"color", "material"} else token.i
 
 
 def _a_thing(token) -> bool:
     """True when the lexicon knows `token`'s word (as written or its lemma) as a category of things."""
+    return "cat" in _lexicon_kinds(token.lower_, token.lemma_)
+
+
+def _lexicon_kinds(*words: str) -> set[str]:
+    """The kinds of lexicon phrase ("cat", "room", "color", ...) that any of the one-word `words` is."""
     phrases = load_lexicon().phrases
-    return any(k == "cat" for w in {token.lower_, token.lemma_} for k, _ in phrases.get((w,), ()))
+    return {kind for w in words for kind, _ in phrases.get((w,), ())}
 
 
 def _a_persons(token) -> bool:
@@ -418,11 +423,12 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     if verb.lemma_ in _PLACING_VERBS and person and any(c.dep_ == "dobj" for c in verb.children) \
             and (placed := _place_of([verb])) is not None:
         return placed
-    seats = [k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
-             if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and doc[k].lower_ != "room"  # not the den,
-             and "room" not in dict(load_lexicon().phrases.get((doc[k].lower_,), ()))]  # the sitting room
-    if seats and verb.lemma_ in ("sit", "lie") and person:  # what is sat on, not a room
-        return seats[0]  # ("I'd like to sit down in the den, in one of the armchairs")
+    if verb.lemma_ in ("sit", "lie") and person:  # what is sat on, not a room (not the den, the sitting room)
+        seat = next((k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
+                     if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and doc[k].lower_ != "room"
+                     and "room" not in _lexicon_kinds(doc[k].lower_)), None)
+        if seat is not None:
+            return seat  # ("I'd like to sit down in the den, in one of the armchairs")
     for child in () if clauses_only else verb.children:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         found = _object_of(doc, child) if way else child.i if child.lower_ in ("one", "ones") else _noun_of(child)

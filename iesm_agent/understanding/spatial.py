@@ -177,7 +177,7 @@ class _Reader:
 
     def of_the_group(self, k: int) -> bool:
         """True when the parsed word `k` stands for the others of the target's kind: a pronoun, a
-        number or "the others" ("between them", "between the other two", "the middle of the three")."""
+        number or "the others" ("between them", "between the remaining two", "the middle of the three")."""
         word = self.structure.words[k]
         return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | {"others", "rest"}
 
@@ -470,7 +470,7 @@ class _Reader:
             return self.ordinal_from(i, nxt)
         if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head != st.target
                                       and st.words[cue.head].pos not in ("VERB", "AUX")):
-            return i  # "without unlocking my phone": not done; "above the bed without the laptop": the bed's
+            return i  # "without opening my laptop": not done; "the mirror over the sink without the soap": the sink's
         if kind == "facing":
             return self.facing(i)
         if kind in ("corner", "middle") and nxt == "of":
