@@ -242,6 +242,39 @@ def test_middle_reads_whose_middle(text, expected):
     assert _middles(text) == expected
 
 
+@pytest.mark.parametrize("query, best", [
+    ("the plant standing by itself", 15),           # its nearest fellow plant is the farthest away
+    ("the lone plant", 15),
+    ("pick the plant that is on its own", 15),
+    ("the plant furthest away from the other two", 15),
+    ("the plant closest to the others", 16),         # near both the others
+])
+def test_apart_from_or_amid_the_others_of_its_kind(room, query, best):
+    ranked = spatial(room, query)
+    assert ranked and ranked[0] == best, (query, ranked)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the mug on its own", [("farthest", "group", [], "")]),
+    ("the stools by themselves", [("farthest", "group", [], "")]),
+    ("the mug furthest from the rest", [("farthest", "group", [], "")]),
+    ("the mug furthest from the kettle", [("farthest", "", [("kettle",)], "")]),  # a landmark is no group
+    ("the mug by its own kettle", [("near", "", [("kettle",)], "")]),              # "own" before a noun
+    ("the mug by the lone kettle", [("near", "", [("kettle",)], "")]),             # said of the landmark
+])
+def test_apart_from_the_group_reads_no_landmark(text, expected):
+    assert _middles(text) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("the lamp alongside the sofa", [("near", [("sofa",)], "")]),
+    ("the vase upon the dresser", [("on", [("dresser",)], "")]),
+    ("the book amongst the plants", [("near", [("plant",)], "")]),
+])
+def test_rarer_prepositions_of_place(text, expected):
+    assert _relations(text) == expected
+
+
 @pytest.mark.parametrize("text, expected", [
     # where the one who looks stands is not where the target is
     ("when standing by the piano, the stool on the left", [("left", [], "")]),

@@ -17,8 +17,9 @@ from .query import analyse_query
 from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
 #: relation cues (word sequences) by the relation they name, from the lexicon's language file
-_CUES: dict[tuple[str, ...], str] = {tuple(cue.split()): kind for kind, cues in read_data("language.json")[
-    "relation_cues"].items() for cue in cues}
+_CUES: dict[tuple[str, ...], str] = {  # as read: without the words the reader skips ("on [its] own")
+    tuple(w for w in cue.split() if w not in read_data("language.json")["skip"]): kind
+    for kind, cues in read_data("language.json")["relation_cues"].items() for cue in cues}
 #: compass directions on the map's plan (x east, y north, as the store's `relate` tool says them):
 #: sides with an axis of their own, whoever looks ("the north side of the desk", "the west crate")
 COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
@@ -66,7 +67,7 @@ class Relation:
     landmarks: list[tuple[str, ...]] = field(default_factory=list)  # one tuple of canonical categories per landmark
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
     #: extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of
-    #: the target's kind, else the room's middle or a landmark's
+    #: the target's kind, else the room's middle or a landmark's; closest/farthest: "group" for the others of its kind
     value: str = ""
     order: int = 0  # ordinal: 1-based, -1 = last
     landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of its instances; "foot" / "head": its end
@@ -468,6 +469,11 @@ class _Reader:
             return i + 1
         if kind == "from":
             return self.ordinal_from(i, nxt)
+        if kind == "alone":  # "the desk on its own", "the lone stool": apart from the others of its kind
+            if cue.dep in ("amod", "compound") and cue.head != st.target:  # "on its own shelf", "by the lone fern"
+                return self.landmark_relation(i, _CUES[words[:1]], nxt) if len(words) > 1 else i
+            out.relations.append(Relation("farthest", value="group"))
+            return i
         if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head != st.target
                                       and st.words[cue.head].pos not in ("VERB", "AUX")):
             return i  # "without opening my laptop": not done; "the mirror over the sink without the soap": the sink's
@@ -591,7 +597,7 @@ class _Reader:
 
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
-        toks, rel = self.toks, Relation(kind)
+        toks, rel, st = self.toks, Relation(kind), self.structure
         if kind in ("left", "right", "front", "behind") or kind in COMPASS:
             if not self.side_of() and self.says_which_landmark(kind) or self.located_by_pronoun(kind):
                 return i
@@ -606,7 +612,11 @@ class _Reader:
         elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if anchor is None or not self.landmark(rel, anchor):
-                self.landmark(rel, i)
+                if any(st.words[k].pos == "NUM" or st.words[k].text.lower() in ("others", "rest", "ones")
+                       for k in self.cue_objects()):
+                    rel.value = "group"  # "furthest from the other two": from the others of its kind
+                else:
+                    self.landmark(rel, i)
         elif kind == "between" and any(self.of_the_group(k) for k in self.cue_objects()):
             rel = Relation("middle", value="group")  # "the bookcase in between them": the middle one of its kind
         elif self.located_by_pronoun(kind):
@@ -644,7 +654,7 @@ class _Reader:
                     out.relations = [r for r in out.relations if r.kind in ("extreme", "ordinal")]
         # a relation to a landmark the request does not name ("the nearest sofa") says nothing
         out.relations = [r for r in out.relations
-                         if r.landmarks or r.kind not in _LANDMARK_KINDS | {"closest", "farthest", "opposite"}]
+                         if r.landmarks or r.value or r.kind not in _LANDMARK_KINDS | {"closest", "farthest", "opposite"}]
         if target is not None:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))

@@ -344,6 +344,10 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
+    if rel.value == "group" and kind in ("closest", "farthest") and len(targets) > 1:  # the others of its kind:
+        gap = geo.xy_gap(tb, tb) + 0.25 * geo.center_distance(tb, tb)  # (T, T) m
+        np.fill_diagonal(gap, np.nan)  # apart from them: its nearest fellow is far; amid them: near them all
+        return _rank_score(np.nanmin(gap, axis=1) if kind == "farthest" else -np.nanmean(gap, axis=1))
     if not marks and (kind in _CONTACT or kind in ("near", "closest", "farthest", "between", "opposite")):
         return None  # the query's landmark could not be read: no guess
     if kind in _CONTACT:
