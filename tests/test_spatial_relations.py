@@ -261,6 +261,9 @@ def test_apart_from_or_amid_the_others_of_its_kind(room, query, best):
     ("the mug furthest from the kettle", [("farthest", "", [("kettle",)], "")]),  # a landmark is no group
     ("the mug by its own kettle", [("near", "", [("kettle",)], "")]),              # "own" before a noun
     ("the mug by the lone kettle", [("near", "", [("kettle",)], "")]),             # said of the landmark
+    ("somewhere I can read on my own", []),                # said of a person
+    ("the stain will not lift on its own", []),           # said of a doing
+    ("the vase nearest 2 the clock", [("closest", "", [("clock",)], "")]),  # a digit for "to" is no group
 ])
 def test_apart_from_the_group_reads_no_landmark(text, expected):
     assert _middles(text) == expected

@@ -46,6 +46,8 @@ _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
+#: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
+_BEING = frozenset(read_data("language.json")["auxiliaries"]) | {"s", "placed", "located"}
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
@@ -181,6 +183,16 @@ class _Reader:
         number or "the others" ("between them", "between the remaining two", "the middle of the three")."""
         word = self.structure.words[k]
         return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | {"others", "rest"}
+
+    def placed_alone(self, i: int) -> bool:
+        """True when the phrase of being alone at token `i` ("on its own", "by itself") is said of a thing where
+        it is (on a noun, or a verb of being, standing or sitting), not of a person ("sit on my own") or a doing
+        ("they will not dry on their own")."""
+        st, owner = self.structure, self.words[i]
+        if any(st.words[k].text.lower() not in ("its", "their") for k in st.children(self.cue_word, "poss")):
+            return False
+        head = st.words[st.words[owner].head]
+        return head.pos in NOUNS or head.text.lower().lstrip("'") in _STANDING | _SITTING | _BEING
 
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
@@ -472,7 +484,8 @@ class _Reader:
         if kind == "alone":  # "the desk on its own", "the lone stool": apart from the others of its kind
             if cue.dep in ("amod", "compound") and cue.head != st.target:  # "on its own shelf", "by the lone fern"
                 return self.landmark_relation(i, _CUES[words[:1]], nxt) if len(words) > 1 else i
-            out.relations.append(Relation("farthest", value="group"))
+            if len(words) == 1 or self.placed_alone(i - len(words)):
+                out.relations.append(Relation("farthest", value="group"))
             return i
         if words == ("without",) and (not st.children(self.cue_word, "pobj") or cue.head != st.target
                                       and st.words[cue.head].pos not in ("VERB", "AUX")):
@@ -611,12 +624,10 @@ class _Reader:
                 i = self.last_landmark_end if self.landmark(rel, frm) else i
         elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
-            if anchor is None or not self.landmark(rel, anchor):
-                if any(st.words[k].pos == "NUM" or st.words[k].text.lower() in ("others", "rest", "ones")
-                       for k in self.cue_objects()):
-                    rel.value = "group"  # "furthest from the other two": from the others of its kind
-                else:
-                    self.landmark(rel, i)
+            if (anchor is None or not self.landmark(rel, anchor)) and not self.landmark(rel, i) and any(
+                    st.words[k].pos == "NUM" or st.words[k].text.lower() in ("others", "rest", "ones")
+                    for k in self.cue_objects()):
+                rel.value = "group"  # "furthest from the other two": from the others of its kind
         elif kind == "between" and any(self.of_the_group(k) for k in self.cue_objects()):
             rel = Relation("middle", value="group")  # "the bookcase in between them": the middle one of its kind
         elif self.located_by_pronoun(kind):
