@@ -366,3 +366,16 @@ def test_a_landmark_named_in_the_request_is_no_evidence_for_itself(model, lib):
              {"id": 3, "label": "lamp", "room": "hall", "caption": "a floor lamp"}]
     for name in ("obj", "desc", "abs", "room"):
         assert expert_rank(model, lib, name, "the crate next to the radiator", kappa=2, cands=cands) == [2]
+
+
+@pytest.mark.parametrize("query, colours, expected", [
+    # none is white: of the greys and beiges (related to white) the palest first, then the others
+    ("the white stool", ("olive", "charcoal", "taupe"), ("taupe", "charcoal", "olive")),
+    ("the black stool", ("taupe", "olive", "charcoal"), ("charcoal", "olive", "taupe")),
+    ("the stool that is green", ("charcoal", "taupe", "olive"), ("olive", "taupe", "charcoal")),  # olive is a green
+])
+def test_a_colour_no_candidate_has_ranks_them_by_how_near_theirs_looks(model, lib, query, colours, expected):
+    stools = [{"id": i, "label": "stool", "room": "kitchen", "caption": f"a {colour} stool", "tags": {"color": colour}}
+              for i, colour in enumerate(colours, 31)]  # (ids in another order than the expected one's)
+    ranked = expert_rank(model, lib, "desc", query, kappa=3, cands=stools)
+    assert [colours[i - 31] for i in ranked] == list(expected)

@@ -805,3 +805,24 @@ def test_a_place_said_by_what_people_do_there_is_a_landmark():
     above = parse_query("the shelf over where we cook").relations[0]
     assert above.kind == "above" and "stove" in above.landmarks[0]
     assert parse_query("the lamp near where the books are").relations[0].landmarks == [("book",)]
+
+
+@pytest.mark.parametrize("text, own", [
+    ("the kettle with the black lid on the counter", set()),     # a part's colour
+    ("the lamp by the olive-green cabinet", set()),             # a landmark's
+    ("the grey cushion beside an orange cushion", {"gray"}),
+    ("the stool that is green", {"green"}),                      # said after the noun
+])
+def test_the_colours_said_of_the_target(text, own):
+    from iesm_agent.providers.offline.looks import own_colours
+    assert own_colours(analyse_query(text)) == own
+
+
+def test_the_spatial_expert_weighs_how_near_a_colour_looks(tmp_path):
+    # two stools equally near the table, neither named white: the paler one is the white one
+    objects = [box(1, "table", (2.0, 2.0, 0.4), (1.0, 1.0, 0.8)),
+               box(2, "stool", (2.0, 1.2, 0.3), (0.4, 0.4, 0.6), tags={"color": "charcoal"}),
+               box(3, "stool", (2.0, 2.8, 0.3), (0.4, 0.4, 0.6), tags={"color": "taupe"})]
+    store = make_store(tmp_path, objects)
+    assert spatial(store, "the white stool beside the table")[0] == 3
+    assert spatial(store, "the black stool beside the table")[0] == 2

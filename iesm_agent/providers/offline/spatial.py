@@ -18,8 +18,9 @@ import numpy as np
 
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
-from ...understanding import analyse_query, candidate_from_line, label_concepts, room_of
+from ...understanding import Slot, analyse_query, candidate_from_line, label_concepts, room_of
 from ...understanding.spatial import COMPASS, SIZE_EXTREMES, Relation, parse_query
+from .looks import colour_nearness, own_colours
 from .prompt import Prompt
 
 #: words in an expert's gate description that make the gate score it by the query's relations
@@ -45,6 +46,7 @@ class _Scene:
     label_words: list[frozenset[str]]
     words: list[frozenset[str]]    # lemmas of each line's label, caption, tags and room
     parts: list[frozenset[str]]    # categories each line's caption names ("with a green seat cushion")
+    colours: list[tuple[Slot, ...]]  # the colours each line's label, caption and tags say
 
 
 @dataclass(frozen=True)
@@ -63,6 +65,7 @@ class _Line:
     label_words: frozenset[str]
     words: frozenset[str]
     parts: frozenset[str]
+    colours: tuple[Slot, ...]
 
 
 @lru_cache(maxsize=65536)
@@ -92,7 +95,8 @@ def _read_line(line: str) -> _Line | None:
                  label_words=record[1].label_words if record else frozenset(),
                  words=record[1].words | record[1].room_words if record else frozenset(),
                  parts=frozenset(v for sp in lex.scan([lex.lemma(t) for t in lex.tokens(str(data.get("caption") or ""))])
-                                 for k, v in sp.kinds if k == "cat"))
+                                 for k, v in sp.kinds if k == "cat"),
+                 colours=tuple(s for s in record[1].slots if s.kind == "color") if record else ())
 
 
 def _read_scene(prompt: Prompt) -> _Scene:
@@ -118,7 +122,8 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
                   rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep],
                   on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
                   is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep],
-                  words=[r.words for r, _ in keep], parts=[r.parts for r, _ in keep])
+                  words=[r.words for r, _ in keep], parts=[r.parts for r, _ in keep],
+                  colours=[r.colours for r, _ in keep])
 
 
 @lru_cache(maxsize=512)
@@ -218,6 +223,8 @@ def _member(lex, word: str, label: str) -> float:
 #: half a relation's range, so a relation one candidate meets and the other does not still
 #: decides, and on a ranked relation ("closest") so does a lead of more than half the range
 _LITERAL_NAME = 0.5
+#: what the target's colour is worth, ranked over the targets: as much as its literal name, for the same reason
+_LOOK = 0.5
 
 
 def _named_most_literally(scene: _Scene, rows: np.ndarray, head: frozenset[str],
@@ -480,6 +487,12 @@ def rank(prompt: Prompt) -> dict:
     if sq.modifiers and any(c in load_lexicon().generic for c in sq.target):
         # a class noun says little: "the bar seat" is likelier the seat whose own words say "bar"
         total += _LITERAL_NAME * np.array([sq.modifiers <= scene.words[t] for t in targets], bool)
+    own = own_colours(reading)
+    for asked in (s for s in reading.slots if s.kind == "color" and s.values & own):
+        # the target's colour: those of its family first, then by how near theirs looks (a scan's means are dull)
+        look = [max((1.0 if asked.values & seen.values else colour_nearness(asked, seen) for seen in scene.colours[t]),
+                    default=0.0) for t in targets]
+        total += _LOOK * _rank_score(np.array(look))
     placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
     comparisons = [rel for rel in sq.relations if rel.kind == "extreme" and not rel.negated]
     for rel in sq.relations:

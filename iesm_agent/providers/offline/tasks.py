@@ -12,6 +12,7 @@ import numpy as np
 
 from ...lexicon import load_lexicon
 from ...understanding import QueryInfo, Record, Slot, analyse_query, candidate_from_line, ground_query, stem
+from .looks import colour_nearness, own_colours
 from .prompt import Prompt, focus_role
 
 _KNOWN_ROLES = {"obj": "obj", "object": "obj", "room": "room", "desc": "desc", "description": "desc",
@@ -412,8 +413,9 @@ def _candidate_matrix(q: QueryInfo, block: _Block) -> np.ndarray:
                               dtype=np.float64).reshape(-1)[block.room_key_of]
     if q.slots:
         desc = np.zeros(n, dtype=np.float64)
+        own = own_colours(q)
         for slot in q.slots:  # (in order: the sum as Python's sum of the same values)
-            desc = desc + _slot_match(block, slot)
+            desc = desc + _slot_match(block, slot, slot.kind == "color" and bool(slot.values & own))
         comp[:, _DESC] = desc / len(q.slots)
     if q.overlap:
         comp[:, _TEXT] = _text_overlap(q, block.records)
@@ -463,18 +465,19 @@ def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], m
 
 
 @lru_cache(maxsize=4096)
-def _slot_match(block: _Block, slot: Slot) -> np.ndarray:
+def _slot_match(block: _Block, slot: Slot, by_look: bool = False) -> np.ndarray:
     """(N,) read-only: the best match of an attribute the query asks for (`slot`) against each
     candidate of `block`: the same words 1.0, the same words up to shade 0.9, its words in the
     candidate's text 0.85, the same family 0.7-0.8, a related family 0.4; -0.5 when the candidate
-    says the opposite and nothing matches ("the biggest table" against a small table). Memoised by
+    says the opposite and nothing matches ("the biggest table" against a small table); with
+    `by_look` (a colour said of the target) the other colours by how near they look. Memoised by
     the block and the slot (queries asking for "red" on one map share it); each distinct slot of
     the block is compared once."""
     lex = load_lexicon()
     n = len(block.records)
     best = np.zeros(n, dtype=np.float64)
     if len(block.slot_row):
-        sims = np.array([_slot_sim(lex, slot, other) for other in block.slots], dtype=np.float64)
+        sims = np.array([_slot_sim(lex, slot, other, by_look) for other in block.slots], dtype=np.float64)
         np.maximum.at(best, block.slot_row, sims[block.slot_of])
     words = frozenset(stem(w) for w in slot.base.split() if w != "like")
     if words:
@@ -490,7 +493,7 @@ def _slot_match(block: _Block, slot: Slot) -> np.ndarray:
     return best
 
 
-def _slot_sim(lex, slot: Slot, other: Slot) -> float:
+def _slot_sim(lex, slot: Slot, other: Slot, by_look: bool) -> float:
     if other.kind != slot.kind:
         return 0.0
     if other.surface == slot.surface:
@@ -500,9 +503,15 @@ def _slot_sim(lex, slot: Slot, other: Slot) -> float:
     shared = slot.values & other.values
     if shared:
         return 0.7 + 0.1 * len(shared) / len(slot.values | other.values)
-    if any(lex.attr_sim(slot.kind, a, b) > 0 for a in slot.values for b in other.values):
-        return 0.4
-    return 0.0
+    related = any(lex.attr_sim(slot.kind, a, b) > 0 for a in slot.values for b in other.values)
+    if by_look:  # not the colour asked for: how near it looks orders the related ones and the others
+        nearness = colour_nearness(slot, other)  # ("white": a taupe stool before a charcoal one)
+        return 0.4 + 0.1 * nearness if related else _COLOUR_NEARNESS * nearness
+    return 0.4 if related else 0.0
+
+
+#: the largest score of a colour that is neither the one asked for nor related (a related family: 0.4-0.5)
+_COLOUR_NEARNESS = 0.3
 
 
 def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
