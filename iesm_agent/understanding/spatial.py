@@ -458,9 +458,8 @@ class _Reader:
             and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
-        if kind != "facing" and len(words) == 1 and cue.pos in ("VERB", "AUX") and any(
-                st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
-            return i  # "the mug I left there": a verb with a pronoun subject (not just tagged a verb: "..., left jar")
+        if kind != "facing" and any(st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
+            return i  # "the mug I left there": a cue with a pronoun subject
         if kind in ("on", "wall") and nxt in ("wall", "walls"):
             out.relations.append(Relation("wall"))
             return i + 1
