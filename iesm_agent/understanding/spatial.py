@@ -265,11 +265,11 @@ class _Reader:
         return head is not None and st.words[head].text.lower() in _TURNED
 
     def on_a_plan(self, i: int) -> bool:
-        """True when the height word at `i` comes before a side or corner ("the top left corner",
-        "the upper right one"): a place on a plan seen from above, not a height."""
+        """True when the height word at `i` comes before a side ("the top left corner", "the upper
+        right one"): a place on a plan seen from above, not a height."""
         after = self.toks[i + 1] if i + 1 < len(self.toks) else ""
         return _EXTREMES.get(self.toks[i], _HEIGHT_NOUNS.get(self.toks[i])) in ("high", "low") \
-            and (_CUES.get((after,)) in _SIDES or after == "corner")
+            and _CUES.get((after,)) in _SIDES
 
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height (not on a plan): a modifier
@@ -294,12 +294,10 @@ class _Reader:
 
     def whole_of(self, at: int) -> int | None:
         """Start of the category span of the thing that the span at `at` names a part of, through the
-        part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"): free, not the target and
-        of another kind (not "the left stool of the three stools"); else None."""
+        part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"), free and not the target; else None."""
         st, head = self.structure, self.words[self.cat_at[at].end - 1]
         whole = next((j for j in map(self.span_of.get, st.children(st.of_phrase(head), "pobj")) if j is not None), None)
-        held = whole is None or whole in self.used or whole == self.target_at
-        return None if held or set(self.cat_at[whole].values("cat")) & set(self.cat_at[at].values("cat")) else whole
+        return None if whole is None or whole in self.used or whole == self.target_at else whole
 
     def antecedent(self, objects: set[int]) -> int | None:
         """Start of the category span that a pronoun the cue takes stands for when the cue places the
@@ -473,9 +471,8 @@ class _Reader:
             and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
-        if kind != "facing" and len(words) == 1 and cue.pos in ("VERB", "AUX") and any(
-                st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
-            return i  # "the mug I left there": a verb with a pronoun subject (not just tagged a verb: "..., left jar")
+        if kind != "facing" and any(st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
+            return i  # "the mug I left there": a cue with a pronoun subject
         if kind in ("on", "wall") and nxt in ("wall", "walls"):
             out.relations.append(Relation("wall"))
             return i + 1
@@ -501,7 +498,7 @@ class _Reader:
                 or cue.dep == "advmod" and self.word(i).dep != "pobj" and cue.head == self.words[i]):
             return i  # "right under the basin", "right alongside it": an intensifier, not a side
         if kind in ("corner", "middle", "wall") and before >= 0 and self.last_landmark_end == before \
-                and toks[before] in ("in", "at", "by"):
+                and toks[before] in ("in", "at"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
             return i
         if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind
@@ -542,8 +539,7 @@ class _Reader:
             return False
         subjects = st.children(k, "nsubj")
         return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
-            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT", "pcomp")
-                               and (verb in _STANDING or self.opens_clause(k))))
+            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT") and (verb in _STANDING or self.opens_clause(k))))
 
     def opens_clause(self, k: int) -> bool:
         """True when the parsed word `k` opens the request or a clause after punctuation."""
@@ -614,8 +610,7 @@ class _Reader:
         if kind in ("left", "right", "front", "behind") or kind in COMPASS:
             if not self.side_of() and self.says_which_landmark(kind) or self.located_by_pronoun(kind):
                 return i
-            if nxt == "of" or (kind == "front" and toks[i - 2:i - 1] == ["in"]) or self.side_of() \
-                    or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
+            if nxt == "of" or self.side_of() or (kind == "behind" and self.structure.children(self.cue_word, "pobj")):
                 self.landmark(rel, i)  # "left of my bed", "behind a sofa"
         elif kind == "opposite":  # "across the desk from the grey stool": two landmarks, else one
             frm = next((j for j in range(i, len(toks)) if toks[j] == "from"), None)
