@@ -38,9 +38,16 @@ def _nearness(asked: tuple[int, ...], seen: tuple[int, ...]) -> float:
     """`colour_nearness` of two sets of table rows."""
     if not asked or not seen:
         return 0.0
-    lab = colour_table().lab
-    difference = float(ciede2000(lab[list(asked)][:, None, :], lab[list(seen)][None, :, :]).min())
+    difference = float(_differences()[np.ix_(asked, seen)].min())
     return float(np.exp(-(difference / _SPREAD) ** 2))
+
+
+@lru_cache(maxsize=1)
+def _differences() -> np.ndarray:
+    """(N, N) CIEDE2000 difference between every two entries of the colour table, computed once (one
+    call for all 26,569 pairs costs less than a few calls for a handful: scikit-image's per-call work)."""
+    lab = colour_table().lab
+    return ciede2000(lab[:, None, :], lab[None, :, :])
 
 
 @lru_cache(maxsize=1024)
