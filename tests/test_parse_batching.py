@@ -39,7 +39,7 @@ class _CountingPipeline:
 def test_a_batch_parses_as_one_sentence_at_a_time(monkeypatch):
     texts = [parse.normalise(t) for t in _suite_texts("spatial_suite.jsonl", 12) + _suite_texts(
         "conflict_suite.jsonl", 12)]
-    texts += ["Not the red one: the blue mug on the shelf", "I spilled juice. Take me to it.", "the lamp"]
+    texts += ["Not the red one: the blue mug on the shelf", "I burnt the toast. Take me to it.", "the lamp"]
     parse.parse_request.cache_clear()
     alone = [parse.parse_request(t) for t in texts]
     parse.parse_request.cache_clear()

@@ -7,6 +7,7 @@ import pytest
 
 from iesm_agent.config import RetrievalConfig
 from iesm_agent.providers.offline import OfflineModel
+from iesm_agent.providers.offline.looks import own_colours
 from iesm_agent.retrieval import Retriever
 from iesm_agent.store import MapStore
 from iesm_agent.store.importers.objects import import_objects
@@ -248,6 +249,7 @@ def test_middle_reads_whose_middle(text, expected):
     ("pick the plant that is on its own", 15),
     ("the plant furthest away from the other two", 15),
     ("the plant closest to the others", 16),         # near both the others
+    ("the desk standing by itself", 6),              # the only desk: ranked, not a landmark missing
 ])
 def test_apart_from_or_amid_the_others_of_its_kind(room, query, best):
     ranked = spatial(room, query)
@@ -814,7 +816,6 @@ def test_a_place_said_by_what_people_do_there_is_a_landmark():
     ("the stool that is green", {"green"}),                      # said after the noun
 ])
 def test_the_colours_said_of_the_target(text, own):
-    from iesm_agent.providers.offline.looks import own_colours
     assert own_colours(analyse_query(text)) == own
 
 

@@ -25,7 +25,7 @@ INVERSE_RELATION = {"on": "with", "under": "above", "below": "above", "above": "
                     "left": "right", "right": "left", "front": "behind", "behind": "front", "opposite": "opposite"}
 
 #: words between a clause's noun and its preposition that are not verb forms ("is", "has been", "right above", "hung")
-_AUXILIARIES = frozenset(read_data("language.json")["auxiliaries"])
+AUXILIARIES = frozenset(read_data("language.json")["auxiliaries"])
 _CLAUSE_END = re.compile(r"([\w'-]+)\s*(?:[.,;:!?()]|\s[-\u2013\u2014]\s|$)")
 #: words of nearness after which a room is a place the target is near, not the room it is in
 NEARNESS = frozenset(read_data("language.json")["nearness"])
@@ -66,7 +66,7 @@ def clause_landmark(categories: dict[int, Span], toks: list[str], cue_start: int
     before = sorted(s for s, span in categories.items() if span.end <= cue_start)
     last = before[-1] if before else None
     if last is None or not all(
-            w in _AUXILIARIES or w.endswith(("ed", "ing")) or (w.endswith("s") and not w.endswith("ss"))
+            w in AUXILIARIES or w.endswith(("ed", "ing")) or (w.endswith("s") and not w.endswith("ss"))
             for w in toks[categories[last].end:cue_start]):
         return None  # "the cushion with the pattern on it": the clause's noun is another word
     return last if len(before) > 1 or TARGET_PRONOUNS.intersection(toks[:last]) else None

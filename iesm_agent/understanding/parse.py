@@ -26,7 +26,7 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: demonstratives that point at a thing ("so that lamp"), whatever the tagger calls them
 _POINTING = frozenset({"that", "this", "these", "those"})
-#: subjects that make a statement about the speaker or another person: a reason, not a request ("I spilled juice")
+#: subjects that make a statement about the speaker or another person: a reason, not a request ("I burnt the toast")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
 #: vessels that count out what the speaker wants ("a jug of lemonade"): the lemonade is wanted
 _PORTIONS = frozenset({"cup", "glass", "mug", "bowl", "plate", "pot", "bottle", "jug", "pint", "slice", "can", "tin"})
@@ -102,7 +102,7 @@ class Structure:
     target: int | None  # word index of the target noun (None: the parse names none)
     phrase: tuple[int, int] | None  # (first, last) word indices of its noun phrase, determiners excluded
     request: tuple[int, int]  # character range of the sentences that make the request: the target's and its sequels
-    context: tuple[tuple[int, int], ...]  # character ranges of what only says why ("I spilled juice.")
+    context: tuple[tuple[int, int], ...]  # character ranges of what only says why ("I burnt the toast.")
     leaving: int | None = None  # the place the speaker wants out of ("how do I leave the kitchen")
     excluded: tuple[int, int] | None = None  # a leading "Not the green kettle:" that rules out, as a character range
     text: str = ""  # the text parsed: the request without the vessels of a wished portion

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from ..lexicon import ATTRIBUTE_KINDS, load_lexicon, read_data
-from .clauses import (BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark,
+from .clauses import (AUXILIARIES, BACK_REFERENCES, INVERSE_RELATION, TARGET_PRONOUNS, clause_final_words, clause_landmark,
                       is_stranded, near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import NAMING, NOUNS, STAND_INS, Word, normalise, parse_request
@@ -47,7 +47,7 @@ _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
-_BEING = frozenset(read_data("language.json")["auxiliaries"]) | {"s", "placed", "located"}
+_BEING = AUXILIARIES | {"s", "placed", "located"}
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by

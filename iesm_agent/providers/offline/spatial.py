@@ -351,7 +351,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
     kind = rel.kind
-    if rel.value == "group" and kind in ("closest", "farthest") and len(targets) > 1:  # the others of its kind:
+    if rel.value == "group" and kind in ("closest", "farthest"):  # the others of its kind (none: it alone)
+        if len(targets) < 2:
+            return np.ones(len(targets))
         gap = geo.xy_gap(tb, tb) + 0.25 * geo.center_distance(tb, tb)  # (T, T) m
         np.fill_diagonal(gap, np.nan)  # apart from them: its nearest fellow is far; amid them: near them all
         return _rank_score(np.nanmin(gap, axis=1) if kind == "farthest" else -np.nanmean(gap, axis=1))
