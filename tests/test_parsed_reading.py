@@ -247,6 +247,31 @@ def test_a_one_that_a_later_exclusion_sets_apart_is_of_the_kind_ruled_out():
     assert not analyse_query("the red thing, not the lamp").named  # "thing" names no kind: nothing to borrow
 
 
+@pytest.mark.parametrize("text", [
+    "either of the striped towels",                       # the parser tags a first "either" as a conjunction
+    "the green one please, not either of the striped towels",  # the kind a contrast with "one" names
+])
+def test_either_of_the_things_names_those_things(text):
+    info = analyse_query(text)
+    assert info.targets.get("towel") == 1.0 and "towel" not in info.excluded_targets
+
+
+@pytest.mark.parametrize("text, kind", [
+    ("We want to show a visitor the tall brass lamp.", "lamp"),
+    ("show the plumber the sink in the bathroom", "sink"),
+])
+def test_of_two_objects_the_second_is_the_thing_the_first_who_gets_it(text, kind):
+    assert analyse_query(text).targets.get(kind) == 1.0
+
+
+@pytest.mark.parametrize("text, kind", [
+    ("My hands are freezing; lead me to the armchair closest to the radiator, not the velvet one.", "armchair"),
+    ("bring me to the lamp by the bed, not the brass one", "lamp"),
+])
+def test_a_one_after_not_is_what_is_ruled_out_not_the_target(text, kind):
+    assert analyse_query(text).targets.get(kind) == 1.0
+
+
 @pytest.mark.parametrize("text, kind", [
     ("In the study there are red cushions lying by the lamps. Lead me to one of them.", "pillow"),
     ("Which plates are on the kitchen shelves? Pick one of them for me.", "plate"),

@@ -372,6 +372,19 @@ def test_the_one_after_a_leading_exclusion_has_its_own_attributes():
     assert mug.target == ("cup",) and mug.attrs == (("color", "blue"),)
 
 
+def test_the_one_before_a_later_exclusion_has_its_own_attributes():
+    # the kind comes from the phrase ruled out after "not", the looks and the place from the one asked for
+    kettle = parse_query("I'd like the small black one near the door, not the big white kettle.")
+    assert kettle.target == ("kettle",) and set(kettle.attrs) == {("color", "black"), ("size", "small")}
+    assert ("extreme", "tall") not in [(r.kind, r.value) for r in kettle.relations]
+
+
+def test_a_relation_takes_no_landmark_from_past_a_negation():
+    # "with silver trim": no thing after "with" before the exclusion, so no landmark at all
+    cup = parse_query("the green one with silver trim, not the tin of biscuits")
+    assert not [r for r in cup.relations if r.landmarks and not r.negated]
+
+
 @pytest.mark.parametrize("text, expected", [
     ("the vase on a shelf of the hall cabinet", [("in", [("cabinet",)], "")]),
     ("the cushion on the seat of the sofa", [("in", [("sofa",)], "")]),

@@ -191,7 +191,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         return Structure(words, None, None, (at, len(text)), (), text=text)
     target = readings[chosen][1]
     request_end = chosen + 1
-    if target is not None and (doc[target].lower_ in STAND_INS or doc[target].pos_ in ("PRON", "DET", "NUM")):
+    if target is not None and (doc[target].lower_ in STAND_INS or doc[target].pos_ in ("PRON", "DET", "NUM", "CCONJ")):
         target = _antecedent(doc, target)  # "any of the footstools": those; the request starts where its noun was named
         chosen = min(chosen, next(i for i, s in enumerate(sentences) if s.start <= target < s.end))
     lemma = doc[target].lemma_ if target is not None else None
@@ -417,13 +417,18 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
                      and "room" not in _lexicon_kinds(doc[k].lower_)), None)
         if seat is not None:
             return seat  # ("I'd like to sit down in the den, in one of the armchairs")
-    for child in () if clauses_only else verb.children:
+    ruled_out = min((c.i for c in verb.children if c.dep_ == "neg" and c.i > verb.i), default=len(doc))
+    kept = [c for c in verb.children if c.i < ruled_out]  # "lead me to the stool, not the wicker one": not that one
+    for child in () if clauses_only else kept:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
+        if child.dep_ == "dobj":  # of two objects ("hand the visitor a towel") the second is the thing
+            child = next((c for c in (*kept, *child.children) if c.i > child.i and c.pos_ == "NOUN"
+                          and c.dep_ in ("dobj", "appos") and not any(t.is_punct for t in doc[child.i:c.i])), child)
         found = _object_of(doc, child) if way else child.i if child.lower_ in ("one", "ones") else _noun_of(child)
         dative = child.dep_ == "ccomp" and any(g.dep_ == "nsubj" and g.lower_ in ("me", "us") for g in child.children)
         if found is not None and (way or dative or child.dep_ in ("dobj", "attr", "oprd")):
             return found  # ("find me one of the lamps", parsed with "me" as the subject of "one")
-    for child in () if clauses_only else verb.children:
+    for child in () if clauses_only else kept:
         if child.dep_ in ("prep", "agent", "dative") and child.lower_ in _DESTINATIONS:
             obj = next((g for g in child.children if g.dep_ == "pobj"), None)
             clause = next((g for g in child.children if g.dep_ == "pcomp"), None)  # "to wherever there's a sofa"

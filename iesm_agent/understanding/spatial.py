@@ -238,10 +238,12 @@ class _Reader:
         return tuple(found)
 
     def next_cat(self, pos: int) -> int | None:
-        """Start of the first free category span from `pos` within what the current cue governs;
-        of those, the one that heads the cue's object ("on the piano [bench]": not the piano)."""
+        """Start of the first free category span from `pos` within what the current cue governs, before
+        an exclusion ("with a chipped rim, not the teapot"); of those, the one that heads the cue's object
+        ("on the piano [bench]": not the piano)."""
         below = self.cue_object()  # None: the parse gives the cue no noun, any span may serve
-        found = [j for j in range(pos, len(self.lemmas)) if j in self.cat_at and j not in self.used
+        end = next((k for k in range(pos, len(self.toks)) if self.toks[k] in _NEGATIONS), len(self.lemmas))
+        found = [j for j in range(pos, end) if j in self.cat_at and j not in self.used
                  and (below is None or below & self.span_words[j])]
         objects = self.cue_objects() if below is not None else set()
         return next((j for j in found if objects & self.span_words[j]), found[0] if found else None)
@@ -665,8 +667,10 @@ class _Reader:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
             one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
-            stand_in = self.words[target] is None and one is not None and self.toks[one] == "one"
-            out.attrs = self.attrs_before(one if stand_in else target)  # "Not the red mug, the blue one": blue
+            # "Not the red mug, the blue one", "the blue one, not the red mug": blue
+            stand_in = one is not None and self.toks[one] == "one" and (
+                self.words[target] is None or _NEGATIONS.intersection(toks[one:target]))
+            out.attrs = self.attrs_before(one if stand_in else target)
             start = target  # the lemmas of the nouns that modify it from its left ("the bar seat": bar)
             while start > 0 and self.word(start - 1).dep == "compound":
                 start -= 1
