@@ -380,8 +380,8 @@ def test_the_one_before_a_later_exclusion_has_its_own_attributes():
 
 
 def test_a_relation_takes_no_landmark_from_past_a_negation():
-    # "with silver trim": no thing after "with" before the exclusion, so no landmark at all
-    cup = parse_query("the green one with silver trim, not the tin of biscuits")
+    # "with a chipped rim": no thing after "with" before the exclusion, so no landmark at all
+    cup = parse_query("the green one with a chipped rim, not the jar of honey")
     assert not [r for r in cup.relations if r.landmarks and not r.negated]
 
 
