@@ -256,6 +256,20 @@ def test_either_of_the_things_names_those_things(text):
     assert info.targets.get("towel") == 1.0 and "towel" not in info.excluded_targets
 
 
+@pytest.mark.parametrize("text", [
+    "the towels are damp, take me to what will dry them",   # "them": the towels named before
+    "help me get my clothes dry",                           # a result: "get X dry" is drying X
+])
+def test_a_use_said_of_a_pronoun_or_as_a_result_is_read_on_the_parse(text):
+    info = analyse_query(text)
+    assert info.afford.get("clothes dryer") == 1.0 and info.purpose
+
+
+def test_a_use_said_not_to_be_done_adds_nothing():
+    info = analyse_query("my shirts are damp; I want to dry them, not wash them")
+    assert info.afford.get("clothes dryer") == 1.0 and info.afford.get("washing machine", 0.0) <= 0.5
+
+
 @pytest.mark.parametrize("text, kind", [
     ("We want to show a visitor the tall brass lamp.", "lamp"),
     ("show the plumber the sink in the bathroom", "sink"),

@@ -108,6 +108,7 @@ class Structure:
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
     kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
     lacking: frozenset[int] = frozenset()  # nouns said absent or done without ("with no chairs", "without the oven")
+    done_to: tuple[tuple[int, int], ...] = ()  # (word, thing) of "dry them" (them: a thing named before), "get it dry"
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -214,8 +215,11 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         if target is not None and doc[target].lower_ in ("one", "ones") else None  # "I need a mug; the blue ones"
     lacking = frozenset(t.i for w in doc if w.lower_ == "without" for t in w.subtree if t.pos_ in NOUNS) | frozenset(
         t.i for t in doc if t.pos_ in NOUNS and t.head.lower_ == "with" and any(c.lower_ == "no" for c in t.children))
+    done_to = tuple((t.i, _antecedent(doc, o.i)) for t in doc if not any(c.dep_ == "neg" for c in t.children)
+                    for o in t.children if o.dep_ == "dobj" and o.lower_ in ("it", "them") and t.pos_ == "VERB"
+                    or o.dep_ == "nsubj" and t.pos_ == "ADJ" and t.dep_ in ("ccomp", "oprd", "xcomp"))
     return Structure(words, target, phrase, request, context, leaving, text=text, kind=kind,
-                     lacking=lacking - {target})
+                     lacking=lacking - {target}, done_to=done_to)
 
 
 def _wished_portion(token) -> bool:

@@ -272,6 +272,15 @@ def analyse_query(text: str) -> QueryInfo:
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)
+    words = reading.structure.words
+    for k, thing in reading.structure.done_to:  # a use said of a pronoun ("dry them") or as a result ("get it dry")
+        kinds = {c for kind, c in lex.phrase(words[thing].text) if kind == "cat"}  # ("dry the shirts": clothes)
+        for cue, idx in lex.cue_sequences.get(lex.lemma(words[k].text.lower()), ()):
+            if len(cue) == 2 and cue[1] in kinds | {lex.lemma(words[thing].text.lower())}:
+                _add_entry(afford, lex.affordances[int(idx)], 0.8)
+                info.purpose = True  # what the use is done to is not where to go
+                if thing == reading.structure.target:
+                    info.targets = {c: w for c, w in info.targets.items() if c not in kinds}
     if reading.preamble:  # "I'm chilly - bring me to ...", "It's upstairs in the study.": why and where
         context = analyse_query(" ".join(reading.preamble))
         scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
