@@ -256,13 +256,15 @@ def test_either_of_the_things_names_those_things(text):
     assert info.targets.get("towel") == 1.0 and "towel" not in info.excluded_targets
 
 
-@pytest.mark.parametrize("text", [
-    "the towels are damp, take me to what will dry them",   # "them": the towels named before
-    "help me get my clothes dry",                           # a result: "get X dry" is drying X
+@pytest.mark.parametrize("text, serves", [
+    ("the towels are damp, take me to what will dry them", "clothes dryer"),  # "them": the towels named before
+    ("help me get my clothes dry", "clothes dryer"),                          # a result: "get X dry" is drying X
+    ("my laundry got soaked, so I must get it dry", "clothes dryer"),          # named as a passive's subject
+    ("the pizza was left out overnight; help me warm it up", "microwave"),    # with the verb's particle
 ])
-def test_a_use_said_of_a_pronoun_or_as_a_result_is_read_on_the_parse(text):
+def test_a_use_said_of_a_pronoun_or_as_a_result_is_read_on_the_parse(text, serves):
     info = analyse_query(text)
-    assert info.afford.get("clothes dryer") == 1.0 and info.purpose
+    assert info.afford.get(serves) == 1.0 and info.purpose and not info.targets
 
 
 def test_a_use_said_not_to_be_done_adds_nothing():

@@ -59,7 +59,7 @@ _SHORTHAND = ((re.compile(r"\b([Ii])ts(?= (?:a|an|the|on|in|at|next|near|under|b
 _FRONTED_EXCLUSION = re.compile(r"^\s*(?:not|never)\b[^:;,.!?\u2013\u2014]*?(?:[:;,\u2013\u2014]|[.!?](?=\s)| - )\s*",
                                 re.IGNORECASE)
 #: dependencies of a noun that names a thing a later stand-in can point to (not a landmark's pobj)
-NAMING = ("dobj", "attr", "nsubj", "ROOT")
+NAMING = ("dobj", "attr", "nsubj", "nsubjpass", "ROOT")
 
 _lock = threading.Lock()
 _nlp = None

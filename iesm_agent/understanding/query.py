@@ -275,12 +275,12 @@ def analyse_query(text: str) -> QueryInfo:
     words = reading.structure.words
     for k, thing in reading.structure.done_to:  # a use said of a pronoun ("dry them") or as a result ("get it dry")
         kinds = {c for kind, c in lex.phrase(words[thing].text) if kind == "cat"}  # ("dry the shirts": clothes)
+        particles = {(), *((words[p].text.lower(),) for p in reading.structure.children(k, "prt"))}  # "warm it up"
         for cue, idx in lex.cue_sequences.get(lex.lemma(words[k].text.lower()), ()):
-            if len(cue) == 2 and cue[1] in kinds | {lex.lemma(words[thing].text.lower())}:
+            if cue[1:-1] in particles and cue[-1] in kinds | {lex.lemma(words[thing].text.lower())}:
                 _add_entry(afford, lex.affordances[int(idx)], 0.8)
                 info.purpose = True  # what the use is done to is not where to go
-                if thing == reading.structure.target:
-                    info.targets = {c: w for c, w in info.targets.items() if c not in kinds}
+                info.targets = {c: w for c, w in info.targets.items() if c not in kinds}
     if reading.preamble:  # "I'm chilly - bring me to ...", "It's upstairs in the study.": why and where
         context = analyse_query(" ".join(reading.preamble))
         scale = _PREAMBLE_SCALE * (max(afford.values()) if afford else 1.0)
