@@ -215,9 +215,10 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         if target is not None and doc[target].lower_ in ("one", "ones") else None  # "I need a mug; the blue ones"
     lacking = frozenset(t.i for w in doc if w.lower_ == "without" for t in w.subtree if t.pos_ in NOUNS) | frozenset(
         t.i for t in doc if t.pos_ in NOUNS and t.head.lower_ == "with" and any(c.lower_ == "no" for c in t.children))
-    done_to = tuple((t.i, _antecedent(doc, o.i)) for t in doc if not any(c.dep_ == "neg" for c in t.children)
-                    for o in t.children if o.dep_ == "dobj" and o.lower_ in ("it", "them") and t.pos_ == "VERB"
-                    or o.dep_ == "nsubj" and t.pos_ == "ADJ" and t.dep_ in ("ccomp", "oprd", "xcomp"))
+    done_to = tuple((t.i, _antecedent(doc, o.i)) for t in doc if t.pos_ in ("VERB", "ADJ") for o in t.children
+                    if (o.dep_ == "dobj" and o.lower_ in ("it", "them") and t.pos_ == "VERB"
+                        or o.dep_ == "nsubj" and t.pos_ == "ADJ" and t.dep_ in ("ccomp", "oprd", "xcomp"))
+                    and not any(c.dep_ == "neg" for c in t.children))
     return Structure(words, target, phrase, request, context, leaving, text=text, kind=kind,
                      lacking=lacking - {target}, done_to=done_to)
 
