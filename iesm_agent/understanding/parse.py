@@ -108,7 +108,7 @@ class Structure:
     text: str = ""  # the text parsed: the request without the vessels of a wished portion
     kind: int | None = None  # for a described stand-in target ("the blue ones"), the noun named before it
     lacking: frozenset[int] = frozenset()  # nouns said absent or done without ("with no chairs", "without the oven")
-    done_to: tuple[tuple[int, int], ...] = ()  # (word, thing) of "dry them" (them: a thing named before), "get it dry"
+    done_to: tuple[tuple[int, int], ...] = ()  # (word, thing) of "scrub them" (them: a thing named before), "get it warm"
 
     def modified_noun(self, k: int) -> int | None:
         """Index of the noun that word `k` modifies (as an adjective, compound or possessor), or
@@ -423,7 +423,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
         if seat is not None:
             return seat  # ("I'd like to sit down in the den, in one of the armchairs")
     ruled_out = min((c.i for c in verb.children if c.dep_ == "neg" and c.i > verb.i), default=len(doc))
-    kept = [c for c in verb.children if c.i < ruled_out]  # "lead me to the stool, not the wicker one": not that one
+    kept = [c for c in verb.children if c.i < ruled_out]  # "lead me to the stool, not the cane one": not that one
     for child in () if clauses_only else kept:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         if child.dep_ == "dobj":  # of two objects ("hand the visitor a towel") the second is the thing

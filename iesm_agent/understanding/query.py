@@ -273,9 +273,9 @@ def analyse_query(text: str) -> QueryInfo:
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
             covered.update(positions)
     words = reading.structure.words
-    for k, thing in reading.structure.done_to:  # a use said of a pronoun ("dry them") or as a result ("get it dry")
+    for k, thing in reading.structure.done_to:  # a use said of a pronoun ("scrub them") or as a result ("get it warm")
         kinds = {c for kind, c in lex.phrase(words[thing].text) if kind == "cat"}  # ("dry the shirts": clothes)
-        particles = {(), *((words[p].text.lower(),) for p in reading.structure.children(k, "prt"))}  # "warm it up"
+        particles = {(), *((words[p].text.lower(),) for p in reading.structure.children(k, "prt"))}  # "plug it in"
         for cue, idx in lex.cue_sequences.get(lex.lemma(words[k].text.lower()), ()):
             if cue[1:-1] in particles and cue[-1] in kinds | {lex.lemma(words[thing].text.lower())}:
                 _add_entry(afford, lex.affordances[int(idx)], 0.8)
