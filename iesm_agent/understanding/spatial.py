@@ -186,7 +186,7 @@ class _Reader:
 
     def placed_alone(self, i: int) -> bool:
         """True when the phrase of being alone at token `i` ("on its own", "by itself") is said of a thing where
-        it is (on a noun, or a verb of being, standing or sitting), not of a person ("sit on my own") or a doing
+        it is (on a noun, or a verb of being, standing or sitting), not of a person ("eat on my own") or a doing
         ("they will not dry on their own")."""
         st, owner = self.structure, self.words[i]
         if any(st.words[k].text.lower() not in ("its", "their") for k in st.children(self.cue_word, "poss")):

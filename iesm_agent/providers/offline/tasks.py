@@ -493,6 +493,10 @@ def _slot_match(block: _Block, slot: Slot, by_look: bool = False) -> np.ndarray:
     return best
 
 
+#: the largest score of a colour that is neither the one asked for nor related (a related family: 0.4-0.5)
+_COLOUR_NEARNESS = 0.3
+
+
 def _slot_sim(lex, slot: Slot, other: Slot, by_look: bool) -> float:
     if other.kind != slot.kind:
         return 0.0
@@ -508,10 +512,6 @@ def _slot_sim(lex, slot: Slot, other: Slot, by_look: bool) -> float:
         nearness = colour_nearness(slot, other)  # ("white": a taupe stool before a charcoal one)
         return 0.4 + 0.1 * nearness if related else _COLOUR_NEARNESS * nearness
     return 0.4 if related else 0.0
-
-
-#: the largest score of a colour that is neither the one asked for nor related (a related family: 0.4-0.5)
-_COLOUR_NEARNESS = 0.3
 
 
 def _weights_key(weights: dict[str, float]) -> tuple[tuple[str, float], ...]:
