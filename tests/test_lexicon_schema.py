@@ -45,6 +45,7 @@ class Rooms(_File):
     rooms: dict[str, list[Phrase]]
     related: list[tuple[str, str, float]]  # two rooms and how alike they are
     modifiers: list[str]
+    qualifiers: list[list[str]]  # words that say which room of a type, one meaning a group
 
 
 class Attributes(_File):
@@ -106,7 +107,7 @@ def test_the_schema_refuses_an_unknown_key_and_an_empty_cue_list():
     with pytest.raises(ValueError):
         Affordances.model_validate({"_doc": "x", "entries": [{"cues": [], "core": ["bed"], "related": []}]})
     with pytest.raises(ValueError):
-        Rooms.model_validate({"_doc": "x", "rooms": {}, "related": [], "modifiers": [], "colour": 1})
+        Rooms.model_validate({"_doc": "x", "rooms": {}, "related": [], "modifiers": [], "qualifiers": [], "colour": 1})
 
 
 def test_every_category_the_lexicon_names_exists():

@@ -180,6 +180,12 @@ def test_a_known_word_with_a_suffix_is_a_word_of_its_own_not_a_typo(word):
     assert load_lexicon().correct(word) == word
 
 
+@pytest.mark.parametrize("word", ["wavering", "clink", "gild", "muck"])
+def test_an_english_word_a_wrong_letter_makes_a_lexicon_word_is_left_alone(word):
+    # words of WordNet's index, not of the shipped list of common words: once "watering", "click", "gold", "much"
+    assert load_lexicon().correct(word) == word
+
+
 def test_a_correction_does_not_depend_on_the_hash_seed():
     # typed words with many lexicon words one edit away: all of them are weighed, in a fixed order
     code = "from iesm_agent.lexicon import load_lexicon; l = load_lexicon(); print([l.correct(w) for w in %r])"

@@ -840,3 +840,18 @@ def test_the_spatial_expert_weighs_how_near_a_colour_looks(tmp_path):
     store = make_store(tmp_path, objects)
     assert spatial(store, "the white stool beside the table")[0] == 3
     assert spatial(store, "the black stool beside the table")[0] == 2
+
+
+@pytest.mark.parametrize("method", ["mtefr", "spr"])
+@pytest.mark.parametrize("asked, meant", [("primary", "master"), ("principal", "master"), ("spare", "guest")])
+def test_a_room_named_by_another_word_for_its_qualifier(tmp_path, method, asked, meant):
+    # the map says "master" and "guest"; a request may say "primary" or "spare" for them (the room meant
+    # holds the later id: a tie between the two bedrooms would pick the other one)
+    other = "guest" if meant == "master" else "master"
+    store = make_store(tmp_path, [
+        box(1, "wardrobe", (0.5, 0.5, 1.0), (1.2, 0.6, 2.0), room=f"{other} bedroom"),
+        box(2, "wardrobe", (6.0, 3.0, 1.0), (1.2, 0.6, 2.0), room=f"{meant} bedroom"),
+        box(3, "bed", (6.0, 1.0, 0.3), (1.6, 2.0, 0.6), room="master bedroom"),
+    ])
+    r = Retriever(store, provider=OfflineModel(use_embeddings=False), method=method)
+    assert r.ask(f"take me to the wardrobe in the {asked} bedroom").instance_id == 2

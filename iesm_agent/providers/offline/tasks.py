@@ -54,8 +54,9 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
     """0-4 per built-in expert. A named category is the decisive evidence (4) when the map has
     it: labels are the mapper's most reliable output; a category no candidate carries is some
     evidence (2), as the request may call the object by another name. A named room (3) and
-    visual details (3; other loose words are weak evidence, 1) qualify it, and outvote it only
-    together (two experts agreeing on another instance).
+    visual details (3; other loose words are weak evidence, 1) qualify it: they order its
+    instances; under the paper's fusion (kappa 2, lambda 0.765) they do not outvote it, even
+    together (two experts outvote a third only with weights above 0.88 of its own).
     Without a category, the function asked for decides (abstract expert 4) when the request says
     what it wants to do; a noun modifying the target that only hints at a use ("the book with
     the gold cover") is some evidence (2)."""
@@ -455,11 +456,13 @@ def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], m
     fit = memo.get(key)
     if fit is None:
         fit = max((w * lex.room_sim(qr, room) for qr, w in q.rooms.items() if room is not None), default=0.0)
+        same = lex.room_qualifiers  # ("the main bedroom": the master bedroom)
         asked = memo.get(("asked room",))
         if asked is None:  # the words the request names its room with, once per query
-            asked = memo[("asked room",)] = frozenset(lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha())
-        if fit and asked and not asked <= room_words:  # "the master bedroom": not the guest bedroom
-            fit *= _OTHER_NAMED_ROOM
+            asked = memo[("asked room",)] = frozenset(same.get(w, w) for w in (
+                lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha()))
+        if fit and asked and not asked <= {same.get(w, w) for w in room_words}:
+            fit *= _OTHER_NAMED_ROOM  # "the master bedroom": not the guest bedroom
         memo[key] = fit
     return fit
 
