@@ -855,3 +855,10 @@ def test_a_room_named_by_another_word_for_its_qualifier(tmp_path, method, asked,
     ])
     r = Retriever(store, provider=OfflineModel(use_embeddings=False), method=method)
     assert r.ask(f"take me to the wardrobe in the {asked} bedroom").instance_id == 2
+
+
+def test_a_with_phrase_naming_the_targets_own_kind_is_a_part_of_it_not_a_landmark():
+    # a pane is a window's, a sofa bed the couch's own part: no second object to be beside
+    assert parse_query("the kitchen window with a cracked pane").relations == []
+    assert parse_query("the couch with a sofa bed in it").relations == []
+    assert [r.landmarks for r in parse_query("the desk with a lamp on it").relations] == [[("lamp",)]]
