@@ -71,3 +71,11 @@ def test_lexicon_is_broad():
     assert len(cats) > 150 and len(lex.affordances) > 50
     assert all(kind in {"cat", "gen", "room", "color", "material", "shape", "size", "desc", "cue"}
                for kinds in lex.phrases.values() for kind, _ in kinds)
+
+
+def test_a_scan_tries_a_shorter_phrase_where_the_longer_one_is_refused():
+    lex = load_lexicon()
+    lemmas = ["coffee", "table"]
+    assert [(s.start, s.end) for s in lex.scan(lemmas)] == [(0, 2)]
+    refused = lex.scan(lemmas, fits=lambda start, end, kinds: end - start < 2)
+    assert [(s.start, s.end) for s in refused] == [(0, 1), (1, 2)]

@@ -461,3 +461,10 @@ def test_a_colour_the_parser_takes_for_the_head_of_a_coordination_leaves_it_to_t
 def test_a_thing_ruled_out_as_a_place_gives_a_stand_in_its_kind():
     info = analyse_query("I'd like to nap, though not on the checked sofa: the plain velvet one")
     assert [c for c, w in info.targets.items() if w >= 1.0] == ["sofa"] and ("material", "velvet") in info.attrs
+
+
+def test_a_use_read_past_a_dropped_word_is_one_phrase_of_the_parse():
+    # "gives me the time": "me" and "time" hang from the verb, not from each other: no "me time" (a rest)
+    afford = analyse_query("Which thing here gives me the time?").afford
+    assert afford.get("clock") == 1.0 and "sofa" not in afford
+    assert analyse_query("could you turn the central heating down").afford.get("heater") == 1.0  # one phrase: kept

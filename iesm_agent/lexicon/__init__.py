@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
@@ -204,9 +205,11 @@ class Lexicon:
         return self._targets
 
     # -- phrases ----------------------------------------------------------------------------
-    def scan(self, lemmas: list[str], breaks: frozenset[int] = frozenset()) -> list[Span]:
+    def scan(self, lemmas: list[str], breaks: frozenset[int] = frozenset(),
+             fits: Callable[[int, int, tuple[tuple[str, str], ...]], bool] | None = None) -> list[Span]:
         """Greedy longest-match of lexicon phrases over `lemmas`, left to right; no phrase
-        spans a break (a token index in `breaks` starts a new clause: "the piano. The stool").
+        spans a break (a token index in `breaks` starts a new clause: "the piano. The stool"),
+        nor a range [start, end) with its kinds that `fits` refuses (a shorter phrase is tried).
 
         A shade followed by a colour ("light blue") is one colour span."""
         spans: list[Span] = []
@@ -222,7 +225,7 @@ class Lexicon:
                     continue
             for size in range(min(self.max_len, limit - i), 0, -1):
                 kinds = self.phrases.get(tuple(lemmas[i:i + size]))
-                if kinds:
+                if kinds and (fits is None or fits(i, i + size, kinds)):
                     spans.append(Span(i, i + size, kinds))
                     i += size
                     break

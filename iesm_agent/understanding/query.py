@@ -132,9 +132,20 @@ def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
     following = {s.start: s for s in spans if s.has("cat")}
     # a compound the parse split ("the notebook pc", one space between as written): its last noun
-    while head.end in following and surface[head.end].at == surface[head.end - 1].at + len(surface[head.end - 1]) + 1:
+    while head.end in following and _typed_together(surface, head.end - 1, head.end + 1):
         head = following[head.end]
     return _Target(min(phrase_start, head.start), head.end, head, structure.target)
+
+
+def _typed_together(surface: list[_Token], start: int, end: int) -> bool:
+    """True when the tokens `surface[start:end]` were typed one space apart, with no word dropped between."""
+    return all(surface[k + 1].at == surface[k].at + len(surface[k]) + 1 for k in range(start, end - 1))
+
+
+def _one_phrase(structure: Structure, tokens: list[_Token]) -> bool:
+    """True when the parse hangs the words of `tokens` from one of them (a cue's words are one phrase)."""
+    ks = [k for k, w in enumerate(structure.words) if any(t.at <= w.start < t.at + len(t) for t in tokens)]
+    return any(all(structure.dominates(h, k) for k in ks) for h in ks)
 
 
 def _surface_index(surface: list[_Token], word: Word) -> int | None:
@@ -228,7 +239,10 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
     # a thing's name right before a hyphened colour suffix is a colour ("light-coloured": no lamp)
-    spans = [s for s in lex.scan(lemmas, breaks) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
+    def one_use(start: int, end: int, kinds) -> bool:  # a use's words read past a dropped word are one phrase
+        return {k for k, _ in kinds} != {"cue"} or _typed_together(surface, start, end) \
+            or _one_phrase(structure, surface[start:end])  # ("turn on the light"; not "tells me the time")
+    spans = [s for s in lex.scan(lemmas, breaks, one_use) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
              or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]
              or corrected[surface[s.end].at - 1] != "-"]
     # a use's word as the target noun with a colour or material ("a red leather volume") names a thing, not a use
@@ -268,6 +282,8 @@ def analyse_query(text: str) -> QueryInfo:
     covered = {i for s in reading.spans for i in range(s.start, s.end)}
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
     for positions, idx in lex.gapped_cues(reading.lemmas):
+        if not _one_phrase(reading.structure, [surface[k] for k in positions]):
+            continue  # a verb's object between its words ("turn the heating down"), not two phrases' words
         info.purpose = info.purpose or len(positions) > 1  # "turn the heating down": a phrase says what to do
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
