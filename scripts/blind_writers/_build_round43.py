@@ -1,0 +1,420 @@
+"""Hand-written groups of blind round 43; writes evals/blind/round43.jsonl.
+Each group: (type, map, target, accept, [w1..w6])."""
+import json
+from pathlib import Path
+
+C829 = "../../../shared/data/iesm_maps/scene_00829_caption.json"
+OF3 = "../../../shared/data/iesm_maps/scene_office3_caption.json"
+FC, FD, FF, FH = "maps/flat_c.json", "maps/flat_d.json", "maps/flat_f.json", "maps/flat_h.json"
+APT = "apartment"
+SB, SK, SL, SO = "../maps/scan_bedroom.json", "../maps/scan_kitchen.json", "../maps/scan_livingroom.json", "../maps/scan_office.json"
+
+GROUPS = [
+    # ---------------- o: a category ----------------
+    ("o", OF3, 11, [4, 11, 12, 27], [
+        "Go to the curtains.",
+        "Could you take me to one of the drapes, please?",
+        "window drapes",
+        "I want to let some light in, so find me something hanging at a window that I can pull open - a curtain, not a blind.",
+        "This is a piece of fabric hanging from a rod beside a window. It can be drawn open or closed.",
+        "can u go find the drapse",
+    ]),
+    ("o", C829, 78, [78, 234], [
+        "Go to the wall TV.",
+        "Could you show me where a television is mounted on the wall?",
+        "wall-mounted telly",
+        "I want to watch the news, so take me to a screen fixed to the wall, not a freestanding monitor.",
+        "This is a flat-screen television. It hangs on a wall rather than standing on furniture.",
+        "where's the televsion on the wall",
+    ]),
+    ("o", C829, 4, [4, 9, 32, 79, 191, 261, 263], [
+        "Go to an easy chair.",
+        "Could you lead me to one of the comfy lounge chairs?",
+        "cosy armchair for lounging",
+        "My back is sore, so I want a big padded lounge seat to sink into, not a folding chair.",
+        "This is a soft upholstered chair made for relaxing. It is bigger and plusher than a dining seat.",
+        "take me to a comfy lounging chiar",
+    ]),
+    ("o", FC, 10, [10, 37], [
+        "Go to a plant.",
+        "Could you take me to one of the potted plants?",
+        "houseplant",
+        "I want to check whether the greenery needs water, so any pot with something growing in it will do.",
+        "This is a living green thing growing in a pot. It sits on the floor indoors.",
+        "where are the house plnts",
+    ]),
+    ("o", FH, 13, [13, 26, 32], [
+        "Go to a mug.",
+        "Could you find me one of the mugs?",
+        "coffee cup",
+        "I want a hot drink, so bring me to any drinking cup with a handle - not the vase.",
+        "This is a small cup with a handle for hot drinks. It is the kind you pour tea or coffee into.",
+        "where's a cofee cup",
+    ]),
+    ("o", FD, 8, [8, 9, 34], [
+        "Go to a lamp.",
+        "Could you take me to one of the lights I can switch on?",
+        "light",
+        "It's getting dark, so I need any lamp at all, whichever room it is in.",
+        "This is an electric light fitting that stands on its own. You switch it on to light up the area.",
+        "find me a lmap",
+    ]),
+    ("o", APT, 30, [30, 43], [
+        "Go to a mirror.",
+        "Could you show me where I can see my reflection?",
+        "looking glass",
+        "I want to check my hair before I leave, so any reflective glass on a wall will do.",
+        "This is a pane of glass that reflects whoever stands in front of it. It is fixed on a wall.",
+        "where can i find a mirorr",
+    ]),
+    # ---------------- or: a category in a named room ----------------
+    ("or", C829, 34, [34, 74], [
+        "Go to the side table in the living room.",
+        "Could you take me to one of the small end tables in the living room?",
+        "end table, living room",
+        "I want to put my glass down beside the seating in the living room, not on a bedroom one.",
+        "This is a small table that stands next to seating. It is in the living room.",
+        "living room end tabel pls",
+    ]),
+    ("or", C829, 160, [160, 162, 164], [
+        "Go to the set of towels in the living room.",
+        "Could you lead me to the stacks of towels in the living room?",
+        "folded towels living room",
+        "I need a fresh towel - the folded piles in the living room, not the one on the holder.",
+        "This is a pile of clean folded bath linen. It is kept in the living room.",
+        "where r the towles in the living room",
+    ]),
+    ("or", FC, 19, [19, 20, 21], [
+        "Go to a chair in the kitchen.",
+        "Could you take me to one of the seats in the kitchen?",
+        "kitchen seat",
+        "I want to sit down to eat, so a seat in the kitchen please, not the rattan one in the bedroom.",
+        "This is a seat placed around the dining table. It is in the kitchen.",
+        "find me a kitchen chiar",
+    ]),
+    ("or", FD, 4, [4, 5, 7], [
+        "Go to a chair in the studio.",
+        "Could you find me a seat in the studio?",
+        "studio seat",
+        "I want to sit somewhere in the studio, not on the tiny children's seat in the kids room.",
+        "This is a single seat for one person. It is in the studio.",
+        "any chair in the studoi",
+    ]),
+    ("or", FF, 12, [12, 13, 14, 15], [
+        "Go to a chair in the kitchen.",
+        "Could you take me to one of the kitchen seats?",
+        "kitchen seat",
+        "I need to sit down in the kitchen, not on the rocking one out on the porch.",
+        "This is a wooden seat at the dining table. It stands in the kitchen.",
+        "take me to a seat in the kitchn",
+    ]),
+    ("or", FH, 46, [46, 47], [
+        "Go to the nightstand in the master bedroom.",
+        "Could you take me to one of the bedside tables in the master bedroom?",
+        "bedside table, main bedroom",
+        "I left my glasses by the double bed, so one of its bedside tables, not the one in the guest room.",
+        "This is a small table beside the bed. It is in the master bedroom.",
+        "bedside tabel in the big bedroom",
+    ]),
+    ("or", APT, 42, [42], [
+        "Go to the cabinet in the bathroom.",
+        "Could you take me to the cupboard in the bathroom?",
+        "bathroom cupboard",
+        "I need a clean towel from the bathroom storage, not the kitchen cupboards.",
+        "This is a storage unit with doors. It is in the bathroom.",
+        "the cupbaord in the bathroom",
+    ]),
+    # ---------------- od: a described object ----------------
+    ("od", OF3, 9, [9], [
+        "Go to the screen that shows a map of the world.",
+        "Could you take me to the display with the blue world map on it?",
+        "world map display",
+        "I want to look at that screen with the globe map, not the laptop.",
+        "This is a computer display made of metal. Its screen is blue and shows a map of the world.",
+        "the scren with the world map",
+    ]),
+    ("od", C829, 159, [159], [
+        "Go to the amber glass bottle.",
+        "Could you find the clear and amber glass flask with the little cap?",
+        "amber glass flask",
+        "I'm after the glass flask with the label on it, not a towel or a bowl.",
+        "This is a glass container, partly clear and partly amber. It has a small round cap and a label.",
+        "wheres the ambr glass flask",
+    ]),
+    ("od", C829, 211, [211], [
+        "Go to the deep blue ceramic bowl with gold patterns.",
+        "Could you take me to the glossy blue bowl with gold decoration?",
+        "blue-and-gold ornamental bowl",
+        "I want the decorative one, the blue glazed piece, not the white bowl of sweets.",
+        "This is an ornamental dish of shiny ceramic. It is deep blue with gold patterning.",
+        "the blue and gold decoretive dish",
+    ]),
+    ("od", FD, 29, [29], [
+        "Go to the teddy bear.",
+        "Could you find the brown plush toy bear?",
+        "cuddly brown bear",
+        "My son can't sleep without his soft toy, the brown furry bear, not the blocks in the toy chest.",
+        "This is a small stuffed toy animal. It is brown and plush, and lies on the bottom bunk.",
+        "where's the tedy",
+    ]),
+    ("od", FF, 25, [25], [
+        "Go to the telescope.",
+        "Could you take me to the black stargazing scope on the tripod?",
+        "star-gazing scope",
+        "I want to look at the stars tonight, so take me to the instrument on three legs, not the boots.",
+        "This is an optical instrument for looking at the sky. It is black and stands on a tripod.",
+        "wheres the telescpoe",
+    ]),
+    ("od", FH, 19, [19], [
+        "Go to the cobalt blue glass vase.",
+        "Could you show me the blue glass vessel holding the tulips?",
+        "blue flower holder, glass",
+        "I want to change the flowers, so the one with tulips in it, not a mug or a bowl.",
+        "This is a glass container for flowers, coloured cobalt blue. It has tulips in it.",
+        "the blue vasse with tulips",
+    ]),
+    ("od", APT, 27, [27], [
+        "Go to the red electric kettle.",
+        "Could you find the shiny red water boiler?",
+        "glossy red jug for boiling water",
+        "I want to boil water for tea, so the red one on the counter please, not the microwave.",
+        "This is an electric water boiler. It is glossy and red.",
+        "wheres the red ketle",
+    ]),
+    # ---------------- ord: described + room ----------------
+    ("ord", OF3, 13, [13], [
+        "Go to the navy blue velvet pillow in the rec room.",
+        "Could you take me to the dark blue velvety cushion in the rec room?",
+        "navy velvet cushion, rec room",
+        "I want the soft navy cushion with the button, not one of the orange ones in the rec room.",
+        "This is a soft velvet cushion in navy blue with a buttoned design. It is in the rec room.",
+        "the navy cushoin in the rec room",
+    ]),
+    ("ord", C829, 190, [190], [
+        "Go to the counter with white marble and a gold metal frame in the bathroom.",
+        "Could you find the marble-topped counter with the gold frame in the bathroom?",
+        "marble and gold counter, bathroom",
+        "I want the bathroom counter that mixes white marble with dark wood, not the all-wood one.",
+        "This is a counter combining dark wood with white marble. It sits on a gold metal frame in a bathroom.",
+        "the marbel counter with gold frame in the bathroom",
+    ]),
+    ("ord", C829, 261, [261], [
+        "Go to the brown woven easy chair in the bedroom.",
+        "Could you take me to the lounge chair upholstered in brown woven fabric in the bedroom?",
+        "woven brown recliner, bedroom",
+        "I want the bedroom armchair with the woven cover, not the leather one.",
+        "This is a deep brown lounge chair covered in sturdy woven material. It is in the bedroom and can massage you.",
+        "the woven brown comfy chair in the bedrom",
+    ]),
+    ("ord", FC, 40, [40], [
+        "Go to the sink in the bathroom.",
+        "Could you take me to the washbasin in the bathroom?",
+        "bathroom washbasin",
+        "I want to wash my face, so the basin in the bathroom, not the farmhouse one in the kitchen.",
+        "This is a white ceramic basin on a small vanity unit. It is in the bathroom.",
+        "the bathroom wash basn",
+    ]),
+    ("ord", FF, 37, [37], [
+        "Go to the mirrored medicine cabinet in the bathroom.",
+        "Could you find the wall cupboard with a mirror door in the bathroom?",
+        "mirrored medicine cupboard, bathroom",
+        "I need a plaster, so the little white medicine cupboard in the bathroom, not the green dresser in the kitchen.",
+        "This is a small white wooden cupboard with a mirror on its door. It is mounted on the bathroom wall over the basin.",
+        "the medecine cupboard in the bathroom",
+    ]),
+    ("ord", FH, 43, [43], [
+        "Go to the red ceramic lamp in the guest bedroom.",
+        "Could you take me to the red bedside light in the guest bedroom?",
+        "red bedside light, guest room",
+        "I want the red light in the spare room, not the white one in the master bedroom.",
+        "This is a bedside light with a red ceramic base and a cream shade. It is in the guest bedroom.",
+        "the red lamp in the gust bedroom",
+    ]),
+    ("ord", APT, 48, [48], [
+        "Go to the red leather chair in the office.",
+        "Could you take me to the red swivel chair in the office?",
+        "red leather desk seat, office",
+        "I want to sit at the computer in the office on the red seat with wheels, not a dining seat.",
+        "This is a swivel seat upholstered in red leather, with armrests and wheels. It is in the office.",
+        "the red leathr desk seat in the office",
+    ]),
+    # ---------------- ard: activity / need ----------------
+    ("ard", OF3, 25, [25], [
+        "Take me to something that tells the time.",
+        "Could you show me where I can check what time it is?",
+        "check time, on wall",
+        "I think I'm running late and need to see the hour on the wall, not on my phone.",
+        "I need to know the time. Take me to the thing on the wall that shows it.",
+        "need to chek the time",
+    ]),
+    ("ard", C829, 192, [192], [
+        "Take me to where the dog sleeps.",
+        "Could you show me where our pet curls up to nap?",
+        "pet's sleeping spot",
+        "The puppy is tired, so I need its own little bed, not the people's bed.",
+        "I need somewhere for my cat to sleep. It should be soft and made for animals.",
+        "where does the dgo sleep",
+    ]),
+    ("ard", FC, 29, [29], [
+        "Take me to something I can set to wake me up tomorrow.",
+        "Could you take me to whatever will ring in the morning to wake me?",
+        "wake me at six",
+        "I have an early train, so I need to set something to go off at six, not just a light.",
+        "I need to be woken at dawn. Take me to the thing that rings at a set hour.",
+        "need something to wake me up erly tomorrow",
+    ]),
+    ("ard", FD, 27, [27], [
+        "Take me to where I can press my shirt.",
+        "Could you show me where I can get the creases out of my trousers?",
+        "iron clothes",
+        "My shirt is wrinkled and I have an interview, so I need somewhere to iron it, not to wash it.",
+        "I want to smooth out a crumpled shirt. Take me to the thing I'd lay it on while ironing.",
+        "need to iron my shrit",
+    ]),
+    ("ard", FF, 24, [24], [
+        "Take me to something to keep my feet dry in the mud.",
+        "Could you find me something waterproof to wear on my feet in the garden?",
+        "muddy garden footwear",
+        "It rained all night and I'm going into the garden, so I need something for wet ground, not slippers.",
+        "I want to walk through wet grass. Take me to what I could pull on over my socks.",
+        "need something for my feet in the mudd",
+    ]),
+    ("ard", APT, 20, [20], [
+        "Take me to something to reheat my leftovers quickly.",
+        "Could you show me where I can warm up a plate of food in a couple of minutes?",
+        "reheat leftovers fast",
+        "I don't want to turn on the oven, I just need to zap last night's pasta for two minutes.",
+        "I want to heat up a bowl of soup in a hurry. Take me to the appliance for that.",
+        "need to reheat my leftovrs quick",
+    ]),
+    ("ard", APT, 54, [54], [
+        "Take me to something I can print a document on.",
+        "Could you show me where I can get a paper copy of my boarding pass?",
+        "print document",
+        "I need a hard copy of this contract, not just on the screen.",
+        "I have to get a report onto paper. Take me to the machine that does that.",
+        "need to print my tiket",
+    ]),
+    ("ard", SK, 12, [12], [
+        "Take me to something that can brew coffee.",
+        "Could you show me where I can make myself an espresso?",
+        "brew coffee",
+        "I'm half asleep and need a fresh pot of coffee, not just hot water.",
+        "I want a freshly brewed cup of coffee. Take me to the appliance that makes it.",
+        "need to make cofee",
+    ]),
+    # ---------------- s: spatial ----------------
+    ("s", SO, 10, [10], [
+        "Go to the office chair closest to the door.",
+        "Could you take me to the desk chair nearest the door?",
+        "desk seat nearest door",
+        "I want to slip out quickly after the meeting, so the swivel seat nearest the door, not one by the windows.",
+        "This is a swivel seat at one of the two big tables. Of all of them it is the one closest to the door.",
+        "the desk chiar next to the door",
+    ]),
+    ("s", SO, 15, [15], [
+        "Go to the bookshelf in the middle of the three.",
+        "Could you take me to the bookcase between the other two?",
+        "middle bookcase",
+        "I want the bookcase in the centre of the row, not either one at the ends.",
+        "This is one of three bookcases standing in a row against the wall. It is the one between the other two.",
+        "the middle bookcse",
+    ]),
+    ("s", SK, 21, [21], [
+        "Go to the chair at the end of the table nearest the door.",
+        "Could you take me to the seat at the head of the table on the door side?",
+        "seat table end by door",
+        "I want to sit at the end of the table near the door, not one of the seats along the long sides.",
+        "This is a seat at one short end of the dining table. It is the end closer to the door.",
+        "the seat at the end of the table near the doorr",
+    ]),
+    ("s", SK, 3, [3], [
+        "Go to the kitchen cabinet under the sink.",
+        "Could you take me to the cupboard directly below the sink?",
+        "cupboard below sink",
+        "I need the dish soap, which lives under the sink, not in a wall cupboard up high.",
+        "This is a low cupboard along the back wall. It is right underneath the sink.",
+        "the cupbord under the sink",
+    ]),
+    ("s", SL, 4, [4], [
+        "Sitting on the sofa, go to the red pillow on my right.",
+        "Could you take me to the red cushion on the right-hand side when I sit on the couch facing the TV?",
+        "red cushion, right side, seated view",
+        "When I'm on the couch looking at the TV, I want the red cushion on my right, not the one on my left.",
+        "This is a red cushion on the sofa. Sitting on the sofa facing the television, it is the one to your right.",
+        "sat on the couch, the red cusion on my right",
+    ]),
+    ("s", SB, 9, [9], [
+        "Go to the lamp nearest the door.",
+        "Could you take me to the bedside light closest to the door?",
+        "light nearest door",
+        "I want the bedside light on the door side of the bed, not the one by the window.",
+        "This is a small light on a bedside table. It is the one closer to the door.",
+        "the bedside lamp by the doorr",
+    ]),
+    ("s", FC, 7, [7], [
+        "Go to the lamp on the side table.",
+        "Could you take me to the light standing on the little black table by the sofa?",
+        "light on end table",
+        "I want the small light sitting on top of the end table, not the tall floor one.",
+        "This is a small light with a white base. It stands on top of the black end table beside the sofa.",
+        "the lamp sitting on the sid table",
+    ]),
+    ("s", FD, 22, [22], [
+        "Go to the stool closer to the fridge.",
+        "Could you take me to the stool nearest the refrigerator?",
+        "seat nearest fridge",
+        "I want the tall seat nearer the fridge, not the other one.",
+        "This is one of two tall seats in the kitchenette. It is the one nearer to the fridge.",
+        "the tall seat closest to the fidge",
+    ]),
+    ("s", FH, 17, [17], [
+        "Go to the dining chair nearest the window.",
+        "Could you take me to the chair at the dining table closest to the window?",
+        "dining seat nearest window",
+        "I want to sit in the light, so the seat nearest the window, not the rattan one.",
+        "This is a seat at the dining table. Of the seats there, it is nearest the window.",
+        "the seat closest to the windw",
+    ]),
+    ("s", APT, 12, [12], [
+        "Go to the book sitting higher up on the bookshelf in the living room.",
+        "Could you take me to the upper of the two volumes on the living room bookcase?",
+        "higher volume, living room bookcase",
+        "I want the novel up high on the living room bookcase, not the one on the bottom shelf.",
+        "This is a hardback on the living room bookcase. Of the two there, it is the one placed higher.",
+        "the higher nvel on the living room bookcase",
+    ]),
+    ("s", APT, 39, [39], [
+        "Go to the plant on top of the dresser.",
+        "Could you take me to the little succulent sitting on the chest of drawers?",
+        "succulent on dresser",
+        "I want the tiny one sitting on the chest of drawers, not a big one on the floor.",
+        "This is a small pot of greenery. It sits on top of the chest of drawers.",
+        "the plant on top of the drawrs",
+    ]),
+    ("s", APT, 1, [1], [
+        "Go to the sofa farther from the TV.",
+        "Could you take me to the couch that is farthest from the television?",
+        "couch farthest from TV",
+        "I want to sit a long way from the screen, so not the couch closer to it.",
+        "This is a couch in the living room. Of the two, it is the one farther from the television.",
+        "the couch furthest from the televison",
+    ]),
+]
+
+
+def main():
+    out = Path(__file__).resolve().parents[2] / "evals" / "blind" / "round43.jsonl"
+    lines = []
+    assert len(GROUPS) == 48, len(GROUPS)
+    for g, (typ, mp, target, accept, words) in enumerate(GROUPS, 1):
+        assert len(words) == 6
+        for k, q in enumerate(words, 1):
+            lines.append(json.dumps({"id": f"b43-g{g:02d}-w{k}", "map": mp, "query": q, "type": typ,
+                                     "target": target, "accept": sorted(accept), "group": f"b43-g{g:02d}"}))
+    out.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    print(f"wrote {len(lines)} lines to {out}")
+
+
+if __name__ == "__main__":
+    main()
