@@ -143,9 +143,10 @@ def _typed_together(surface: list[_Token], start: int, end: int) -> bool:
 
 
 def _one_phrase(structure: Structure, tokens: list[_Token]) -> bool:
-    """True when the parse hangs the words of `tokens` from one of them (a cue's words are one phrase)."""
+    """True when the parse hangs the words of `tokens` from one of them (a cue's words are one phrase),
+    or has none of them."""
     ks = [k for k, w in enumerate(structure.words) if any(t.at <= w.start < t.at + len(t) for t in tokens)]
-    return any(all(structure.dominates(h, k) for k in ks) for h in ks)
+    return not ks or any(all(structure.dominates(h, k) for k in ks) for h in ks)
 
 
 def _surface_index(surface: list[_Token], word: Word) -> int | None:
@@ -238,10 +239,10 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     surface = [t for t in tokens if t not in lex.words["skip"]]
     lemmas = lemmatise(lex, surface)
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
-    # a thing's name right before a hyphened colour suffix is a colour ("light-coloured": no lamp)
     def one_use(start: int, end: int, kinds) -> bool:  # a use's words read past a dropped word are one phrase
         return {k for k, _ in kinds} != {"cue"} or _typed_together(surface, start, end) \
             or _one_phrase(structure, surface[start:end])  # ("turn on the light"; not "tells me the time")
+    # a thing's name right before a hyphened colour suffix is a colour ("light-coloured": no lamp)
     spans = [s for s in lex.scan(lemmas, breaks, one_use) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
              or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]
              or corrected[surface[s.end].at - 1] != "-"]
@@ -283,7 +284,7 @@ def analyse_query(text: str) -> QueryInfo:
     cue_covered = {i for s in reading.spans if s.has("cue") for i in range(s.start, s.end)}
     for positions, idx in lex.gapped_cues(reading.lemmas):
         if not _one_phrase(reading.structure, [surface[k] for k in positions]):
-            continue  # a verb's object between its words ("turn the heating down"), not two phrases' words
+            continue  # its words in two phrases of the parse; "turn the heating down" is one
         info.purpose = info.purpose or len(positions) > 1  # "turn the heating down": a phrase says what to do
         if not cue_covered.intersection(positions):  # a contiguous cue already read these words
             _add_entry(afford, lex.affordances[int(idx)], 0.8)
