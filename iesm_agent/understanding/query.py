@@ -241,7 +241,7 @@ def _read_request(lex: Lexicon, text: str) -> _Reading:
     breaks = clause_breaks(corrected, [(t, t.at) for t in surface])
     def one_use(start: int, end: int, kinds) -> bool:  # a use's words read past a dropped word are one phrase
         return {k for k, _ in kinds} != {"cue"} or _typed_together(surface, start, end) \
-            or _one_phrase(structure, surface[start:end])  # ("turn on the light"; not "tells me the time")
+            or _one_phrase(structure, surface[start:end])  # ("turn on the light"; not "gives me the time")
     # a thing's name right before a hyphened colour suffix is a colour ("light-coloured": no lamp)
     spans = [s for s in lex.scan(lemmas, breaks, one_use) if any(k in ATTRIBUTE_KINDS for k, _ in s.kinds)
              or s.end == len(lemmas) or lemmas[s.end] not in lex.words["color_suffixes"]

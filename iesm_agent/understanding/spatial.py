@@ -667,7 +667,7 @@ class _Reader:
             out.named = True
             out.target = tuple(self.cat_at[target].values("cat"))
             out.relations = [r for r in out.relations if not (r.kind == "with" and r.landmarks and all(
-                set(mark) & set(out.target) for mark in r.landmarks))]  # "the sofa with a chaise": a part of it
+                set(mark) & set(out.target) for mark in r.landmarks))]  # "the couch with a sofa bed": a part of it
             one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
             # "Not the red mug, the blue one", "the blue one, not the red mug": blue
             stand_in = one is not None and self.toks[one] == "one" and (
