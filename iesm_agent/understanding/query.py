@@ -369,7 +369,7 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
                     or near_room(surface, s.start, s.end, {t.start for t in reading.spans if t.has("cat")}):
                 continue  # "a case for the office papers": the papers' room; "closest to the den": a landmark
             info.rooms.update({r: 1.0 for r in s.values("room")})
-            first = s.start - (s.start > 0 and lemmas[s.start - 1] in lex.room_qualifiers)  # "the spare bedroom"
+            first = s.start - (s.start > 0 and lemmas[s.start - 1] in lex.room_qualifiers)  # ("a principal bedroom")
             info.room_phrase = info.room_phrase or " ".join(surface[first:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
