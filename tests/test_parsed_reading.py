@@ -10,6 +10,7 @@ import pytest
 from iesm_agent.lexicon import load_lexicon
 from iesm_agent.understanding import analyse_query
 from iesm_agent.understanding.parse import normalise, parse_request
+from iesm_agent.understanding.spatial import parse_query
 
 
 def _target(text: str) -> str | None:
@@ -241,8 +242,8 @@ def test_a_leading_exclusion_rules_out_and_the_request_follows_it():
     info = analyse_query("Not the striped blue rug: the plain blue one in the hall.")
     assert info.named and "rug" in info.targets                    # "one" is of the kind ruled out before
     assert ("color", "blue") in info.attrs and ("color", "blue") not in info.excluded_attrs  # asked for, so kept
-    info = analyse_query("Not the kettle on the hob, the jug on the windowsill.")
-    assert "bottle" in info.targets and "kettle" in info.excluded_targets and "kettle" not in info.targets
+    info = analyse_query("Not the kettle on the hob, the jug on the windowsill.")  # a described thing: what it is by
+    assert "bottle" in info.targets and "stove" in info.excluded_targets and "kettle" not in info.targets
     structure = parse_request("Not the kettle on the hob, the jug on the windowsill.")
     assert structure.excluded == (0, len("Not the kettle on the hob, "))
 
@@ -251,6 +252,16 @@ def test_a_one_that_a_later_exclusion_sets_apart_is_of_the_kind_ruled_out():
     info = analyse_query("the oak one, not the pine wardrobe")
     assert info.targets.get("wardrobe") == 1.0 and ("material", "wood") in info.attrs
     assert not analyse_query("the red thing, not the lamp").named  # "thing" names no kind: nothing to borrow
+
+
+def test_a_kind_ruled_out_by_name_alone_is_not_the_kind_of_one():
+    info = analyse_query("the tall one, not the wardrobe")  # the contrast is the kind itself
+    assert not info.named and "wardrobe" in info.excluded_targets
+    assert analyse_query("the dark one, not my laptop").excluded_targets == {"laptop"}  # (whose: still the kind)
+    assert parse_query("the shiny one on the shelf, not the kettle").target != ("kettle",)
+    # a thing ruled out by where it is may be of the kind wanted: its kind stays, its place is ruled out
+    info = analyse_query("something to read in the den, not the atlas on the desk")
+    assert "book" not in info.excluded_targets and "desk" in info.excluded_targets
 
 
 @pytest.mark.parametrize("text", [
@@ -423,9 +434,17 @@ def test_misspelt_relation_words_are_corrected(typed, meant):
 @pytest.mark.parametrize("text, target", [
     ("I want to hang this coat up, so any hook will do", "hook"),  # the subject of a verb of sufficing
     ("my back aches, so the recliner by the fireplace", "recliner"),  # a verbless phrase after "so"
+    ("I am carrying a tray, so one of the low stools", "stools"),  # a stand-in after "so": of the stools
 ])
 def test_what_will_do_after_so_names_the_target(text, target):
     assert _target(text) == target
+
+
+def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
+    text = "I want to make toast, so the silver one by the bread bin, not the oven"
+    info = analyse_query(text)
+    assert "oven" not in info.targets and "oven" in info.excluded_targets and info.afford.get("toaster") == 1.0
+    assert parse_query(text).target == ("toaster",)
 
 
 @pytest.mark.parametrize("text, lacking", [

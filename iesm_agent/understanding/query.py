@@ -45,6 +45,18 @@ def _named(info: QueryInfo | SimpleNamespace) -> bool:
     return any(w >= 1.0 for w in info.targets.values())
 
 
+def _kind_alone(lex: Lexicon, info: QueryInfo) -> bool:
+    """True when `info`'s text names kinds and nothing else: no attribute, room, modifier or place
+    ("the kettle", "a cup or a jug"; not "the green kettle", "the cup on the sill")."""
+    words = parse_request(normalise(lex.respell(info.text))).words
+    return not (info.attrs or info.rooms) and all(
+        w.dep in ("det", "cc", "punct", "preconj", "predet") or w.dep == "poss" and w.pos == "PRON"  # "my phone"
+        or w.pos in NOUNS and w.dep in ("ROOT", "conj", "compound", "pobj")
+        or w.pos in ("NUM", "PRON", "DET") and w.dep == "ROOT"  # "one of the desks"
+        or w.dep == "prep" and w.text.lower() == "of" and words[w.head].pos in ("NUM", "PRON", "DET")
+        for w in words)
+
+
 @dataclass(frozen=True, eq=False)
 class QueryInfo:
     """What a query asks for (immutable: `analyse_query` memoises it and every caller shares it).
@@ -268,7 +280,9 @@ def analyse_query(text: str) -> QueryInfo:
     reading = _read_request(lex, text)
     info = SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
-    info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (*out.targets, *out.landmarks))
+    # kinds ruled out by name alone ("not the kettle"); "not the green kettle" rules out what it describes
+    info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (
+        *(out.targets if _kind_alone(lex, out) else ()), *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     # token positions of relative clauses about a landmark whose preposition is stranded, from the landmark's noun to
     # the preposition ("the cabinet [the printer sits on]")
@@ -316,7 +330,9 @@ def analyse_query(text: str) -> QueryInfo:
         info.target_phrase = info.target_phrase or WAY_OUT
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     fronted_or_one = reading.structure.excluded is not None or "one" in reading.lemmas
-    kind_of_one = reading.ruled_out[0] if fronted_or_one and reading.ruled_out else None
+    # a thing ruled out by what it is like or where it is gives "one" its kind; one ruled out by its kind
+    # alone does not ("the glass one, not the wooden bowl": a bowl; "the glass one, not the bowl": no bowl)
+    kind_of_one = next((out for out in reading.ruled_out[:1] if fronted_or_one and not _kind_alone(lex, out)), None)
     named_before = reading.structure.kind is not None  # "I need a mug; the blue ones": its kind, whatever the wish
     if kind_of_one is None and named_before:
         kind_of_one = analyse_query(reading.structure.words[reading.structure.kind].text)

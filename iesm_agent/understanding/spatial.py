@@ -644,13 +644,13 @@ class _Reader:
     def target(self) -> SpatialQuery:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
-        toks, out, taken = self.toks, self.out, self.taken
+        toks, out, taken, info = self.toks, self.out, self.taken, analyse_query(self.text)
         target = self.target_at if self.target_at is not None else next(
             (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
-             and self.words[j] not in self.structure.lacking), None)
+             and self.words[j] not in self.structure.lacking  # nor what the request rules out
+             and not set(self.cat_at[j].values("cat")) <= info.excluded_targets), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
-        info = analyse_query(self.text)
         if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
             # a relation needs a target and a distinct landmark: when the only thing named was read as
             # a landmark ("the nearest sofa", "next to the bed"), it is the target, and no relation is left
