@@ -46,12 +46,9 @@ def stem(word: str) -> str:
     """Crude suffix stripping for word overlap: striped/stripes/stripe -> strip, frosted -> frost."""
     w = next((word[:-len(end)] for longer, end in _SUFFIXES
               if len(word) > longer and word.endswith(end) and not word.endswith("ss")), word)
-    if len(w) > 4 and w.endswith("y"):
-        w = w[:-1]
-    if len(w) > 3 and w.endswith("e"):
-        w = w[:-1]
-    if len(w) > 3 and w[-1] == w[-2]:
-        w = w[:-1]
+    for longer, last in ((4, "y"), (3, "e"), (3, "")):  # a last "y", an "e", a doubled letter ("")
+        if len(w) > longer and w[-1] == (last or w[-2]):
+            w = w[:-1]
     return w
 
 
