@@ -139,8 +139,9 @@ class _Reader:
         self.taken: dict[Relation, list[int]] = {}  # relation -> starts of its landmark spans
         self.pending_ordinal: Relation | None = None
         self.cue_word: int | None = None  # the parsed word of the relation cue being read
-        #: start of a category span -> the parsed words of its tokens
+        #: start of a category span -> the parsed words of its tokens (`span_words`), the categories it names (`kinds`)
         self.span_words = {j: set(self.words[s.start:s.end]) for j, s in self.cat_at.items()}
+        self.kinds = {j: tuple(s.values("cat")) for j, s in self.cat_at.items()}
         #: parsed word -> start of the category span holding its first token (`.get`: None when none holds it)
         self.span_of = {word: next((s for s, span in self.cat_at.items() if span.start <= i < span.end), None)
                         for i, word in reversed(list(enumerate(self.words))) if word is not None}
@@ -149,7 +150,7 @@ class _Reader:
         self.target_at = self.span_of.get(self.structure.target)
         if self.target_at is None:
             named = {c for c, w in analyse_query(text).targets.items() if w >= 1.0}
-            self.target_at = next((j for j in sorted(self.cat_at) if named & set(self.cat_at[j].values("cat"))), None)
+            self.target_at = next((j for j in sorted(self.cat_at) if named.intersection(self.kinds[j])), None)
         self.used: set[int] = set() if self.target_at is None else {self.target_at}  # starts of the spans taken
         self.parts: set[int] = set()  # starts of the landmark spans that name a part of another landmark
 
@@ -157,6 +158,10 @@ class _Reader:
         """The parsed word of token `i` (a blank one for a token outside the parse)."""
         k = self.words[i]
         return self.structure.words[k] if k is not None else Word("", -1, -1, "", "")
+
+    def lower(self, k: int | None) -> str:
+        """The lowercase text of the parsed word `k` ("" for None)."""
+        return self.structure.words[k].text.lower() if k is not None else ""
 
     def cue_object(self) -> set[int] | None:
         """Parsed words the current cue governs ("the far side of [the piano]": through the noun the cue modifies;
@@ -170,26 +175,25 @@ class _Reader:
         """True when the parsed `word` stands for the target: a pronoun ("its left", "behind it")
         or the target's kind named again ("to the left of the piano", said of the piano)."""
         st, j, at = self.structure, self.span_of.get(word), self.target_at
-        if st.words[word].text.lower() in BACK_REFERENCES | {"its"}:
+        if self.lower(word) in BACK_REFERENCES | {"its"}:
             return True
         if j is None or at is None:
             return False
         if j == at:  # "there is a rug under this table", said of the table
-            return any(st.words[d].text.lower() == "this" for d in st.children(word, "det"))
-        return self.cat_at[j].values("cat") == self.cat_at[at].values("cat")
+            return any(self.lower(d) == "this" for d in st.children(word, "det"))
+        return self.kinds[j] == self.kinds[at]
 
     def of_the_group(self, k: int) -> bool:
         """True when the parsed word `k` stands for the others of the target's kind: a pronoun, a
         number or "the others" ("between them", "between the remaining two", "the middle of the three")."""
-        word = self.structure.words[k]
-        return word.pos in ("NUM", "PRON") or word.text.lower() in STAND_INS | {"others", "rest"}
+        return self.structure.words[k].pos in ("NUM", "PRON") or self.lower(k) in STAND_INS | {"others", "rest"}
 
     def placed_alone(self, i: int) -> bool:
         """True when the phrase of being alone at token `i` ("on its own", "by itself") is said of a thing where
         it is (on a noun, or a verb of being, standing or sitting), not of a person ("eat on my own") or a doing
         ("they will not dry on their own")."""
         st, owner = self.structure, self.words[i]
-        if any(st.words[k].text.lower() not in ("its", "their") for k in st.children(self.cue_word, "poss")):
+        if any(self.lower(k) not in ("its", "their") for k in st.children(self.cue_word, "poss")):
             return False
         head = st.words[st.words[owner].head]
         return head.pos in NOUNS or head.text.lower().lstrip("'") in _STANDING | _SITTING | _BEING
@@ -207,8 +211,7 @@ class _Reader:
         k, st = self.noun_of(self.cue_word), self.structure
         of, owner = st.of_phrase(k), self.span_of.get(k)  # "the left stool of the three stools": not a landmark
         return of is not None and (owner is None or not any(
-            j is not None and self.cat_at[j].values("cat") == self.cat_at[owner].values("cat")
-            for j in map(self.span_of.get, st.children(of, "pobj"))))
+            self.kinds.get(j) == self.kinds[owner] for j in map(self.span_of.get, st.children(of, "pobj"))))
 
     def located_by_pronoun(self, kind: str) -> bool:
         """Read the relation of `kind` seen from the target when the cue places another thing relative to it, its object
@@ -260,11 +263,10 @@ class _Reader:
     def turned_to(self, k: int | None) -> bool:
         """True when the parsed side word `k` is what a verb of turning takes, directly or through
         "to" or "towards" ("facing left", "turned towards the right"; not "facing the crate on the right")."""
-        st = self.structure
-        head = st.words[k].head if k is not None else None
-        if head is not None and st.words[head].text.lower() in ("to", "towards", "toward"):
-            head = st.words[head].head
-        return head is not None and st.words[head].text.lower() in _TURNED
+        head = self.structure.words[k].head if k is not None else None
+        if self.lower(head) in ("to", "towards", "toward"):
+            head = self.structure.words[head].head
+        return self.lower(head) in _TURNED
 
     def on_a_plan(self, i: int) -> bool:
         """True when the height word at `i` comes before a side ("the top left corner", "the upper
@@ -286,7 +288,7 @@ class _Reader:
             return False  # the top itself described ("a glass top table"): a part, not a height
         if word.dep in ("amod", "compound"):  # of the target's noun ("the bottom shelf") or of a part (`parts`)
             return self.target_at is not None and self.span_of.get(word.head) in (self.target_at, *self.parts)
-        if word.dep != "pobj" or st.words[word.head].text.lower() not in ("on", "at") or st.of_phrase(k) is not None:
+        if word.dep != "pobj" or self.lower(word.head) not in ("on", "at") or st.of_phrase(k) is not None:
             return False
         owner = st.words[word.head].head  # said of the target ("the cup that sits on top"), not
         if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
@@ -306,7 +308,7 @@ class _Reader:
         target itself ("There's a bookcase in the hall. The vase on top of [it]"): the last one named
         in an earlier sentence, not the target; else None."""
         st = self.structure
-        said = [st.words[k].start for k in objects if st.words[k].text.lower() in BACK_REFERENCES]
+        said = [st.words[k].start for k in objects if self.lower(k) in BACK_REFERENCES]
         top = self.cue_word
         while top is not None and st.words[top].pos in ("ADP", "ADV") and st.words[top].head != top:
             top = st.words[top].head  # the word the cue's phrase hangs on
@@ -329,7 +331,7 @@ class _Reader:
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
                 and self.structure.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
-            at, end, kind = one, one + 1, self.cat_at[self.target_at].values("cat")
+            at, end, kinds = one, one + 1, self.kinds[self.target_at]
         elif self.place_for_use(rel, pos):
             return True
         else:
@@ -345,13 +347,13 @@ class _Reader:
                 at, rel.kind = whole, "in" if rel.kind == "on" else rel.kind
                 self.used.add(at)
             self.taken.setdefault(rel, []).append(at)
-            end, kind = self.cat_at[at].end, self.cat_at[at].values("cat")
+            end, kinds = self.cat_at[at].end, self.kinds[at]
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
             if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in ("foot", "head"):
                 rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of its length
         attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
-        return self.add_landmark(rel, tuple(kind), attrs, end)
+        return self.add_landmark(rel, kinds, attrs, end)
 
     def add_landmark(self, rel: Relation, kinds: tuple[str, ...], attrs: tuple, end: int) -> bool:
         """Add to `rel` a landmark of the categories `kinds` (none: a room's objects) described by `attrs`,
@@ -521,11 +523,11 @@ class _Reader:
                           and self.words[j] is not None
                           and st.words[self.noun_of(self.words[j])].dep not in ("pobj", "dobj")), None)
             if after is not None:
-                self.out.facing, self.target_at = tuple(self.cat_at[at].values("cat")), after
+                self.out.facing, self.target_at = self.kinds[at], after
                 self.used.add(after)
         elif (j := self.next_cat(i)) is not None:
             self.used.add(j)
-            self.out.facing = tuple(self.cat_at[j].values("cat"))
+            self.out.facing = self.kinds[j]
         return i
 
     def viewer_place(self) -> bool:
@@ -536,11 +538,11 @@ class _Reader:
             k = st.words[k].head  # "at [the centre] of the hall": through its preposition
         if k is not None and st.words[k].pos == "ADP":
             k = st.words[k].head
-        verb = st.words[k].text.lower() if k is not None else ""
+        verb = self.lower(k)
         if verb not in _STANDING | _SITTING:
             return False
         subjects = st.children(k, "nsubj")
-        return all(st.words[n].text.lower() in ("you", "i", "we") for n in subjects) and (
+        return all(self.lower(n) in ("you", "i", "we") for n in subjects) and (
             bool(subjects) or (st.words[k].dep in ("advcl", "ROOT") and (verb in _STANDING or self.opens_clause(k))))
 
     def opens_clause(self, k: int) -> bool:
@@ -553,7 +555,7 @@ class _Reader:
         (a room named after "of" is read for itself, so a clause on it keeps its own relation)."""
         rel, objects, st = Relation(kind), self.cue_objects(), self.structure
         objects |= {o for k in objects if self.span_of.get(k) is None for p in st.children(k, "prep")
-                    if st.words[p].text.lower() == "of" for o in st.children(p, "pobj")}  # "a row of vases"
+                    if self.lower(p) == "of" for o in st.children(p, "pobj")}  # "a row of vases"
         if kind == "middle" and any(self.points_back(k) or self.of_the_group(k) for k in objects):
             rel.value = "group"
         elif any(self.span_of.get(k) is not None for k in objects):
@@ -580,9 +582,9 @@ class _Reader:
         if not self.landmark(rel, pos) or self.out.facing:
             return
         j = self.taken[rel][-1]
-        part = any(self.structure.words[k].text.lower() in _FACING_PARTS for k in objects | {self.cue_word})
+        part = any(self.lower(k) in _FACING_PARTS for k in objects | {self.cue_word})
         if part or objects & self.span_words[j]:  # an object the cue takes (not "at the centre of the hall, ...")
-            setattr(self.out, "facing" if part else "viewer_at", tuple(self.cat_at[j].values("cat")))
+            setattr(self.out, "facing" if part else "viewer_at", self.kinds[j])
 
     def ordinal_from(self, i: int, nxt: str) -> int:
         """"from" after an ordinal ("the second from the left", "third from the door"); with no
@@ -590,7 +592,7 @@ class _Reader:
         settee", "From the pantry arch, ..."; not "a pipe runs from the boiler to the sink")."""
         if self.pending_ordinal is None:
             st, k = self.structure, self.cue_word
-            if k is not None and (st.words[st.words[k].head].text.lower() in _SEEING or self.opens_clause(k)):
+            if k is not None and (self.lower(st.words[k].head) in _SEEING or self.opens_clause(k)):
                 self.viewer_landmark(Relation("from"), i)
         elif nxt in ("left", "right"):
             self.pending_ordinal.value = nxt
@@ -603,7 +605,7 @@ class _Reader:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
         category itself, not a part of one ("at one end of the workbench") or a place looked at."""
         st = self.structure
-        return at is not None and st.words[st.words[at].head].text.lower() not in _LOOKING \
+        return at is not None and self.lower(st.words[at].head) not in _LOOKING \
             and any(self.span_of.get(k) is not None for k in st.children(at, "pobj"))
 
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
@@ -622,7 +624,7 @@ class _Reader:
         elif kind in ("closest", "farthest"):
             anchor = next((j for j in range(i, len(toks)) if toks[j] in ("to", "from")), None)
             if (anchor is None or not self.landmark(rel, anchor)) and not self.landmark(rel, i) and any(
-                    st.words[k].pos == "NUM" or st.words[k].text.lower() in ("others", "rest", "ones")
+                    st.words[k].pos == "NUM" or self.lower(k) in ("others", "rest", "ones")
                     for k in self.cue_objects()):
                 rel.value = "group"  # "furthest from the other two": from the others of its kind
         elif kind == "between" and any(self.of_the_group(k) for k in self.cue_objects()):
@@ -665,7 +667,7 @@ class _Reader:
                          if r.landmarks or r.value or r.kind not in _LANDMARK_KINDS | {"closest", "farthest", "opposite"}]
         if target is not None:
             out.named = True
-            out.target = tuple(self.cat_at[target].values("cat"))
+            out.target = self.kinds[target]
             out.relations = [r for r in out.relations if not (r.kind == "with" and r.landmarks and all(
                 set(mark) & set(out.target) for mark in r.landmarks))]  # "the couch with a sofa bed": a part of it
             one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
