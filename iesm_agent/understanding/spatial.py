@@ -650,7 +650,7 @@ class _Reader:
         target = self.target_at if self.target_at is not None else next(
             (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
              and self.words[j] not in self.structure.lacking  # nor what the request rules out
-             and not set(self.cat_at[j].values("cat")) <= info.excluded_targets), None)
+             and not set(self.kinds[j]) <= info.excluded_targets), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
         if target is None and not info.unknown_target and not TARGET_PRONOUNS & set(toks) and out.relations:
