@@ -475,6 +475,15 @@ class _Reader:
             and self.span_of.get(self.noun_of(self.words[i])) is None
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
+        if kind == "with" and cue.pos in ("VERB", "AUX"):  # a verb of having ("the desk that holds a lamp")
+            holder = cue.head if cue.dep in ("relcl", "acl") else next(iter(st.children(self.cue_word, "nsubj")), None)
+            if cue.pos == "AUX" or holder is None or self.target_at is None or (
+                    self.span_of.get(holder) != self.target_at and not self.points_back(holder)):
+                return i  # said of the target, not of the speaker ("I have a spare key") or of another thing
+            if any(k > self.cue_word and st.dominates(self.cue_word, k) and self.lower(k) in BACK_REFERENCES | {"its"}
+                   for k in range(len(st.words))):
+                return i  # "it has a lamp to its left": the phrase that points back says where (`located_by_pronoun`)
+            return self.landmark_relation(i, kind, nxt)
         if kind != "facing" and any(st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
             return i  # "the mug I left there": a cue with a pronoun subject
         if kind in ("on", "wall") and nxt in ("wall", "walls"):
