@@ -316,7 +316,7 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     for t in () if kind in ("empty", "continuation") else sent:
         first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
         after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
-        stand_in = t.lower_ in ("one", "ones")  # "so the red one": the target's stand-in, its own determiner
+        stand_in = t.lower_ in ("one", "ones")  # "so the brass one": the target's stand-in, its own determiner
         if t.pos_ in NOUNS and t.dep_ in ("appos", "npadvmod") and any(
                 c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
                 for c in t.children) or (t.pos_ in NOUNS or stand_in) and (

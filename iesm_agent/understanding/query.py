@@ -50,9 +50,9 @@ def _kind_alone(lex: Lexicon, info: QueryInfo) -> bool:
     ("the kettle", "a cup or a jug"; not "the green kettle", "the cup on the sill")."""
     words = parse_request(normalise(lex.respell(info.text))).words
     return not (info.attrs or info.rooms) and all(
-        w.dep in ("det", "cc", "punct", "preconj", "predet") or w.dep == "poss" and w.pos == "PRON"  # "my phone"
+        w.dep in ("det", "cc", "punct", "preconj", "predet") or w.dep == "poss" and w.pos == "PRON"  # "our ladder"
         or w.pos in NOUNS and w.dep in ("ROOT", "conj", "compound", "pobj")
-        or w.pos in ("NUM", "PRON", "DET") and w.dep == "ROOT"  # "one of the desks"
+        or w.pos in ("NUM", "PRON", "DET") and w.dep == "ROOT"  # "one of the crates"
         or w.dep == "prep" and w.text.lower() == "of" and words[w.head].pos in ("NUM", "PRON", "DET")
         for w in words)
 
@@ -280,7 +280,7 @@ def analyse_query(text: str) -> QueryInfo:
     reading = _read_request(lex, text)
     info = SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
-    # kinds ruled out by name alone ("not the kettle"); "not the green kettle" rules out what it describes
+    # kinds ruled out by name alone ("not the toaster"); "not the chrome toaster" rules out what it describes
     info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (
         *(out.targets if _kind_alone(lex, out) else ()), *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
@@ -331,7 +331,7 @@ def analyse_query(text: str) -> QueryInfo:
     info.kin = functional_kin(lex, [c for c, w in info.targets.items() if w >= 1.0])
     fronted_or_one = reading.structure.excluded is not None or "one" in reading.lemmas
     # a thing ruled out by what it is like or where it is gives "one" its kind; one ruled out by its kind
-    # alone does not ("the glass one, not the wooden bowl": a bowl; "the glass one, not the bowl": no bowl)
+    # alone does not ("the glass one, not the wooden tray": a tray; "the glass one, not the tray": no tray)
     kind_of_one = next((out for out in reading.ruled_out[:1] if fronted_or_one and not _kind_alone(lex, out)), None)
     named_before = reading.structure.kind is not None  # "I need a mug; the blue ones": its kind, whatever the wish
     if kind_of_one is None and named_before:
