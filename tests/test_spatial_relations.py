@@ -874,3 +874,11 @@ def test_a_verb_of_having_said_of_the_target_relates_it_to_what_it_has():
     # a phrase that points back says where the thing is and is read from there, as before (the armchair is
     # to the lamp's right)
     assert read("the armchair that has a lamp to its left") == [("right", [("lamp",)], False)]
+
+
+def test_at_the_foot_or_head_of_a_thing_is_near_that_end_of_it():
+    def read(text):
+        return [(r.kind, r.landmarks, r.landmark_where) for r in parse_query(text).relations]
+    assert read("the slippers at the foot of the bed") == [("near", [("bed",)], "foot")]
+    assert read("the bolster at the head of the sofa") == [("near", [("sofa",)], "head")]
+    assert read("the vice at one end of the workbench") == []  # another part of it says no place

@@ -612,10 +612,13 @@ class _Reader:
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
-        category itself, not a part of one ("at one end of the workbench") or a place looked at."""
+        category itself, or the foot or head of one ("at the head of the cot": that end, `landmark`), not
+        another part of one ("at one end of the workbench") or a place looked at."""
         st = self.structure
-        return at is not None and self.lower(st.words[at].head) not in _LOOKING \
-            and any(self.span_of.get(k) is not None for k in st.children(at, "pobj"))
+        return at is not None and self.lower(st.words[at].head) not in _LOOKING and any(
+            self.span_of.get(k) is not None or self.lower(k) in ("foot", "head") and any(
+                self.span_of.get(g) is not None for g in st.children(st.of_phrase(k), "pobj"))
+            for k in st.children(at, "pobj"))
 
     def landmark_relation(self, i: int, kind: str, nxt: str) -> int:
         """Sides, opposites, nearest/farthest and the relations that need a landmark after them."""
