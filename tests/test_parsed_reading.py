@@ -258,7 +258,7 @@ def test_a_kind_ruled_out_by_name_alone_is_not_the_kind_of_one():
     info = analyse_query("the tall one, not the wardrobe")  # the contrast is the kind itself
     assert not info.named and "wardrobe" in info.excluded_targets
     assert analyse_query("the dark one, not my tablet").excluded_targets == {"tablet"}  # (whose: still the kind)
-    assert parse_query("the shiny one on the shelf, not the kettle").target != ("kettle",)
+    assert parse_query("the shiny one on the shelf, not the toaster").target != ("toaster",)
     # a thing ruled out by where it is may be of the kind wanted: its kind stays, its place is ruled out
     info = analyse_query("something to read in the den, not the atlas on the desk")
     assert "book" not in info.excluded_targets and "desk" in info.excluded_targets

@@ -317,13 +317,14 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
         first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
         after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
         stand_in = t.lower_ in ("one", "ones")  # "so the brass one": the target's stand-in, its own determiner
-        if t.pos_ in NOUNS and t.dep_ in ("appos", "npadvmod") and any(
-                c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
-                for c in t.children) or (t.pos_ in NOUNS or stand_in) and (
-                after_so and (t.dep_ in ("dep", "dobj", "appos") or (stand_in or any(
-                    c.dep_ == "det" or c.lower_ in _POINTING for left in t.lefts for c in left.subtree)) and (
-                    t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
-                    or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice")))):
+        pointed = t.pos_ in NOUNS and t.dep_ in ("appos", "npadvmod") and any(
+            c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
+            for c in t.children)
+        determined = stand_in or any(c.dep_ == "det" or c.lower_ in _POINTING for left in t.lefts for c in left.subtree)
+        after = (t.pos_ in NOUNS or stand_in) and after_so and (t.dep_ in ("dep", "dobj", "appos") or determined and (
+            t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
+            or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice")))
+        if pointed or after:
             return kind, t.i
     return kind, found
 

@@ -47,7 +47,7 @@ def _named(info: QueryInfo | SimpleNamespace) -> bool:
 
 def _kind_alone(lex: Lexicon, info: QueryInfo) -> bool:
     """True when `info`'s text names kinds and nothing else: no attribute, room, modifier or place
-    ("the kettle", "a cup or a jug"; not "the green kettle", "the cup on the sill")."""
+    ("the toaster", "a cup or a jug"; not "the chrome toaster", "the cup on the sill")."""
     words = parse_request(normalise(lex.respell(info.text))).words
     return not (info.attrs or info.rooms) and all(
         w.dep in ("det", "cc", "punct", "preconj", "predet") or w.dep == "poss" and w.pos == "PRON"  # "our ladder"
@@ -281,8 +281,9 @@ def analyse_query(text: str) -> QueryInfo:
     info = SimpleNamespace(**{f.name: f.default_factory() if f.default_factory is not MISSING else f.default
                               for f in fields(QueryInfo) if f.name != "text"}, text=text)  # a mutable draft
     # kinds ruled out by name alone ("not the toaster"); "not the chrome toaster" rules out what it describes
-    info.excluded_targets = frozenset(c for out in reading.ruled_out for c in (
-        *(out.targets if _kind_alone(lex, out) else ()), *out.landmarks))
+    by_kind = [_kind_alone(lex, out) for out in reading.ruled_out]
+    info.excluded_targets = frozenset(c for out, alone in zip(reading.ruled_out, by_kind) for c in (
+        *(out.targets if alone else ()), *out.landmarks))
     info.excluded_attrs = frozenset(kv for out in reading.ruled_out for kv in out.attrs)
     # token positions of relative clauses about a landmark whose preposition is stranded, from the landmark's noun to
     # the preposition ("the cabinet [the printer sits on]")
@@ -332,7 +333,7 @@ def analyse_query(text: str) -> QueryInfo:
     fronted_or_one = reading.structure.excluded is not None or "one" in reading.lemmas
     # a thing ruled out by what it is like or where it is gives "one" its kind; one ruled out by its kind
     # alone does not ("the glass one, not the wooden tray": a tray; "the glass one, not the tray": no tray)
-    kind_of_one = next((out for out in reading.ruled_out[:1] if fronted_or_one and not _kind_alone(lex, out)), None)
+    kind_of_one = reading.ruled_out[0] if fronted_or_one and by_kind and not by_kind[0] else None
     named_before = reading.structure.kind is not None  # "I need a mug; the blue ones": its kind, whatever the wish
     if kind_of_one is None and named_before:
         kind_of_one = analyse_query(reading.structure.words[reading.structure.kind].text)

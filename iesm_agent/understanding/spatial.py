@@ -476,14 +476,7 @@ class _Reader:
         if kind == "on" and (side_noun or (before >= 0 and toks[before] in _USE_VERBS)):
             return i  # "on the left": the side word is the relation; "to sit on": a use, not a place
         if kind == "with" and cue.pos in ("VERB", "AUX"):  # a verb of having ("the desk that holds a lamp")
-            holder = cue.head if cue.dep in ("relcl", "acl") else next(iter(st.children(self.cue_word, "nsubj")), None)
-            if cue.pos == "AUX" or holder is None or self.target_at is None or (
-                    self.span_of.get(holder) != self.target_at and not self.points_back(holder)):
-                return i  # said of the target, not of the speaker ("I have a spare key") or of another thing
-            if any(k > self.cue_word and st.dominates(self.cue_word, k) and self.lower(k) in BACK_REFERENCES | {"its"}
-                   for k in range(len(st.words))):
-                return i  # "it has a lamp to its left": the phrase that points back says where (`located_by_pronoun`)
-            return self.landmark_relation(i, kind, nxt)
+            return self.had(i, nxt) if cue.pos == "VERB" else i
         if kind != "facing" and any(st.words[k].pos == "PRON" for k in st.children(self.cue_word, "nsubj")):
             return i  # "the mug I left there": a cue with a pronoun subject
         if kind in ("on", "wall") and nxt in ("wall", "walls"):
@@ -518,6 +511,21 @@ class _Reader:
             out.relations.append(Relation(kind, value="group"))
             return i
         return self.landmark_relation(i, kind, nxt)
+
+    def had(self, i: int, nxt: str) -> int:
+        """A verb of having whose cue ends before `i` said of the target (its relative clause or participle, or the
+        target as subject): a "with" relation to what it has; not said of the speaker ("I have a spare key") or of
+        another thing, nor when a phrase in its clause points back ("it has a lamp to its left": that phrase says
+        where, `located_by_pronoun`). The position after it."""
+        st, cue = self.structure, self.word(i - 1)
+        holder = cue.head if cue.dep in ("relcl", "acl") else next(iter(st.children(self.cue_word, "nsubj")), None)
+        if holder is None or self.target_at is None or (
+                self.span_of.get(holder) != self.target_at and not self.points_back(holder)):
+            return i
+        if any(k > self.cue_word and st.dominates(self.cue_word, k) and self.lower(k) in BACK_REFERENCES | {"its"}
+               for k in range(len(st.words))):
+            return i
+        return self.landmark_relation(i, "with", nxt)
 
     def facing(self, i: int) -> int:
         """The viewpoint of a cue ending before `i` ("facing the wardrobe"). When the parse's target lies in a
