@@ -882,3 +882,31 @@ def test_at_the_foot_or_head_of_a_thing_is_near_that_end_of_it():
     assert read("the slippers at the foot of the bed") == [("near", [("bed",)], "foot")]
     assert read("the bolster at the head of the sofa") == [("near", [("sofa",)], "head")]
     assert read("the vice at one end of the workbench") == []  # another part of it says no place
+
+
+# A kitchen (x 0-4 m) with a sink on its west wall and three stools along its counter; through the
+# wall a workshop (x 4-8 m) with a workbench and one stool; a shed (x 8-10 m) with one stool.
+SINK_ROOMS = [
+    box(1, "sink", (0.3, 2.0, 0.9), (0.5, 0.6, 0.2), room="kitchen"),
+    box(2, "stool", (1.2, 1.0, 0.35), (0.35, 0.35, 0.7), room="kitchen"),
+    box(3, "stool", (2.2, 1.0, 0.35), (0.35, 0.35, 0.7), room="kitchen"),
+    box(4, "stool", (3.2, 1.0, 0.35), (0.35, 0.35, 0.7), room="kitchen"),
+    box(5, "stool", (6.2, 1.0, 0.35), (0.35, 0.35, 0.7), room="workshop"),
+    box(6, "workbench", (6.0, 3.0, 0.45), (1.5, 0.6, 0.9), room="workshop"),
+    box(7, "stool", (9.0, 1.0, 0.35), (0.35, 0.35, 0.7), room="shed"),
+]
+
+
+@pytest.mark.parametrize("query, best", [
+    ("the stool farthest from the sink", 4),  # compared with the sink's room's stools, not the shed's
+    ("the stool nearest the kitchen sink", 2),
+    ("the stool farthest from the workbench", 2),  # one stool beside it: no comparison there, the home's
+])
+def test_nearest_and_farthest_compare_within_the_landmarks_room(tmp_path, query, best):
+    store = make_store(tmp_path, SINK_ROOMS)
+    assert spatial(store, query)[0] == best
+
+
+def test_a_landmark_in_several_rooms_compares_the_whole_home(tmp_path):
+    store = make_store(tmp_path, SINK_ROOMS + [box(8, "sink", (9.7, 3.5, 0.9), (0.4, 0.4, 0.2), room="shed")])
+    assert spatial(store, "the stool farthest from a sink")[0] == 5  # two sinks: among every stool

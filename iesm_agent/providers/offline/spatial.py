@@ -330,13 +330,14 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     """(len(targets),) scores in [0, 1]; None when a landmark is missing from the map."""
     boxes = scene.boxes
     tb = boxes.take(targets)
-    marks = []
+    marks, mark_rows = [], []  # the landmarks' boxes and the scene rows they come from (none for a room)
     for cats, attrs in zip(rel.landmarks, rel.landmark_attrs):
         rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=rel.kind not in _CONTACT))
         if not len(rows):
             return None
         if rel.landmark_where in ("foot", "head"):
             marks.append(_end_of(scene, rows, rel.landmark_where))
+            mark_rows.append(rows)
             continue
         if rel.landmark_where:
             where = _relation_scores(Relation(rel.landmark_where), scene, rows, view)
@@ -345,11 +346,13 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             room = boxes.take(rows)
             lo, hi = room.lo.min(axis=0, keepdims=True), room.hi.max(axis=0, keepdims=True)
             marks.append(geo.Boxes(np.array([-1]), lo, hi))
+            mark_rows.append(rows[:0])
             continue
         for size in (v for k, v in attrs if k == "size" and v in SIZE_EXTREMES):
             extreme = _relation_scores(Relation("extreme", value=SIZE_EXTREMES[size]), scene, rows, view)
             rows = rows[extreme >= extreme.max() - 1e-9]  # "the small lamp": the smaller of them
         marks.append(boxes.take(rows))
+        mark_rows.append(rows)
     kind = rel.kind
     if rel.value == "group" and kind in ("closest", "farthest"):  # the others of its kind (none: it alone)
         if len(targets) < 2:
@@ -389,7 +392,15 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             named_after = np.array([any(set(c.split()) < scene.label_words[t] for c in rel.landmarks[0])
                                     for t in targets], bool)
             return np.where(named_after, 1.0, np.exp(-gap / geo.NEAR_GAP))
-        return _rank_score(-gap if kind == "closest" else gap)
+        # compared among the targets in the landmark's room when it holds two or more besides the landmark:
+        # "the chair farthest from the stove" is one of the stove's room's, not the farthest chair of the home
+        # (landmarks in several rooms, as "the bookshelf" of a home with two: no one room)
+        rooms = {scene.room_names[r] for r in mark_rows[0]}
+        shared = np.array([scene.room_names[t] in rooms for t in targets], bool) & ~np.isin(targets, mark_rows[0])
+        among = shared if len(rooms) == 1 and None not in rooms and shared.sum() >= 2 else np.ones(len(targets), bool)
+        scores = np.zeros(len(targets))
+        scores[among] = _rank_score(-gap[among] if kind == "closest" else gap[among])
+        return scores
     if kind == "between":
         if len(marks) < 2:
             marks.append(marks[0])
