@@ -291,6 +291,28 @@ def test_where_the_viewer_stands_is_not_a_relation(text, expected):
     assert _relations(text) == expected
 
 
+@pytest.mark.parametrize("text, seat", [
+    # sitting said of anyone, or of the listener in a condition, places the one who looks
+    ("the radio on the left when you are seated on the daybed", ("sofa",)),
+    ("the speaker on the right when seated on the daybed", ("sofa",)),
+    # on "it": on the thing just named
+    ("the green pillow at the right end of the daybed, for somebody sitting on it", ("sofa",)),
+    ("the plant on the left of the daybed while sitting on it", ("sofa",)),
+    # said of the target, a place of the target
+    ("the little jug sitting on the left of the dresser", ()),
+])
+def test_a_seat_in_a_condition_or_of_anyone_is_the_viewers(text, seat):
+    assert parse_query(text).viewer_at == seat
+
+
+def test_who_did_something_is_no_landmark():
+    # "by" naming the doer of a passive is no place; one naming a thing still is
+    q = parse_query("the green pillow on the left of the daybed, as seen by somebody sitting on it facing the fireplace")
+    assert (q.viewer_at, q.facing) == (("sofa",), ("fireplace",))
+    assert [(r.kind, r.landmarks) for r in q.relations] == [("left", [("sofa",)])]
+    assert _relations("the vase made by my aunt by the window") == [("near", [("window",)], "")]
+
+
 @pytest.mark.parametrize("text, expected", [
     # a side word made superlative is the side, written as one word, hyphenated or apart
     ("the leftmost stool", [("left", [], "")]),

@@ -46,6 +46,10 @@ _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
+#: anyone at all, whose place is a viewpoint ("as seen by someone sitting on it"), and the words
+#: that make a clause of sitting or standing a condition of the view ("when seated on the settee")
+_ANYONE = frozenset({"someone", "somebody", "anyone", "anybody", "person"})
+_WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
 _BEING = AUXILIARIES | {"s", "placed", "located"}
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
@@ -433,6 +437,9 @@ class _Reader:
         self.cue_word = self.words[end - 1]
         stranded = kind in INVERSE_RELATION and is_stranded(toks, end, clause_final_words(self.text))
         if (self.word(end - 1).dep == "prt" and not stranded  # "switch on the lamp": a particle of the verb
+                or self.word(end - 1).dep == "agent" and not any(  # "seen by someone", "painted by my aunt": who did it
+                    self.span_of.get(k) is not None or self.lower(k) in ("one", "ones")  # (not "flanked by the ones")
+                    for k in self.structure.children(self.cue_word, "pobj"))
                 # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
                 or kind in ("left", "right") and self.turned_to(self.cue_word)  # "facing left": turned
                 or words == ("face",) and self.word(i).pos != "VERB"  # "the clock face": a noun
@@ -549,7 +556,8 @@ class _Reader:
 
     def viewer_place(self) -> bool:
         """True when the cue word places the one who looks, not the target: it hangs on "stand"
-        said of no one or of the listener ("when standing by the door", "if you stand by the oven")."""
+        said of no one or of the listener ("when standing by the door", "if you stand by the oven"),
+        on "sit" so said in a condition ("when seated on the settee"), or on either said of anyone."""
         st, k = self.structure, self.cue_word
         if k is not None and st.words[k].dep == "pobj":
             k = st.words[k].head  # "at [the centre] of the hall": through its preposition
@@ -558,9 +566,12 @@ class _Reader:
         verb = self.lower(k)
         if verb not in _STANDING | _SITTING:
             return False
-        subjects = st.children(k, "nsubj")
-        return all(self.lower(n) in ("you", "i", "we") for n in subjects) and (
-            bool(subjects) or (st.words[k].dep in ("advcl", "ROOT") and (verb in _STANDING or self.opens_clause(k))))
+        subjects, word = st.children(k, "nsubj", "nsubjpass"), st.words[k]
+        if word.dep == "acl" and self.lower(word.head) in _ANYONE:  # "as seen by someone sitting on it"
+            return True
+        when = any(self.lower(n) in _WHEN for n in st.children(k, "advmod", "mark"))  # "when seated on the settee"
+        return all(self.lower(n) in _ANYONE | {"you", "i", "we"} for n in subjects) and (bool(subjects) or (
+            word.dep in ("advcl", "ROOT") and (verb in _STANDING or when or self.opens_clause(k))))
 
     def opens_clause(self, k: int) -> bool:
         """True when the parsed word `k` opens the request or a clause after punctuation."""
@@ -596,6 +607,10 @@ class _Reader:
         """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
         takes it; at its front, foot or end, as what the viewer faces ("standing at the cot's foot")."""
         objects = self.cue_objects()
+        if any(self.lower(k) in BACK_REFERENCES for k in objects):  # "sitting on it": the thing just named
+            named = next((r.landmarks[0] for r in reversed(self.out.relations) if r.landmarks), None)
+            self.out.viewer_at = self.out.viewer_at or (() if self.out.facing else named or ())
+            return
         if not self.landmark(rel, pos) or self.out.facing:
             return
         j = self.taken[rel][-1]
