@@ -437,10 +437,10 @@ class _Reader:
         self.cue_word = self.words[end - 1]
         stranded = kind in INVERSE_RELATION and is_stranded(toks, end, clause_final_words(self.text))
         if (self.word(end - 1).dep == "prt" and not stranded  # "switch on the lamp": a particle of the verb
+                # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
                 or self.word(end - 1).dep == "agent" and not any(  # "seen by someone", "painted by my aunt": who did it
                     self.span_of.get(k) is not None or self.lower(k) in ("one", "ones")  # (not "flanked by the ones")
                     for k in self.structure.children(self.cue_word, "pobj"))
-                # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
                 or kind in ("left", "right") and self.turned_to(self.cue_word)  # "facing left": turned
                 or words == ("face",) and self.word(i).pos != "VERB"  # "the clock face": a noun
                 or words == ("at",) and not self.beside(self.words[i])):
@@ -609,7 +609,8 @@ class _Reader:
         objects = self.cue_objects()
         if any(self.lower(k) in BACK_REFERENCES for k in objects):  # "sitting on it": the thing just named
             named = next((r.landmarks[0] for r in reversed(self.out.relations) if r.landmarks), None)
-            self.out.viewer_at = self.out.viewer_at or (() if self.out.facing else named or ())
+            if named is not None and not self.out.facing and not self.out.viewer_at:
+                self.out.viewer_at = named
             return
         if not self.landmark(rel, pos) or self.out.facing:
             return
