@@ -46,7 +46,7 @@ _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
 #: when it opens the sentence ("Sitting on the settee, ..."; not "the jug sitting on the dresser")
 _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
-#: anyone at all, whose place is a viewpoint ("as seen by someone sitting on it"), and the words
+#: anyone at all, whose place is a viewpoint ("for somebody sat on it"), and the words
 #: that make a clause of sitting or standing a condition of the view ("when seated on the settee")
 _ANYONE = frozenset({"someone", "somebody", "anyone", "anybody", "person"})
 _WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
@@ -438,8 +438,8 @@ class _Reader:
         stranded = kind in INVERSE_RELATION and is_stranded(toks, end, clause_final_words(self.text))
         if (self.word(end - 1).dep == "prt" and not stranded  # "switch on the lamp": a particle of the verb
                 # (but "pick the one across [from] the sofa": a cue's last word with its object is a cue)
-                or self.word(end - 1).dep == "agent" and not any(  # "seen by someone", "painted by my aunt": who did it
-                    self.span_of.get(k) is not None or self.lower(k) in ("one", "ones")  # (not "flanked by the ones")
+                or self.word(end - 1).dep == "agent" and not any(  # "watched by somebody", "painted by my aunt": who did it
+                    self.span_of.get(k) is not None or self.lower(k) in ("one", "ones")  # (not "framed by the ones")
                     for k in self.structure.children(self.cue_word, "pobj"))
                 or kind in ("left", "right") and self.turned_to(self.cue_word)  # "facing left": turned
                 or words == ("face",) and self.word(i).pos != "VERB"  # "the clock face": a noun
@@ -567,7 +567,7 @@ class _Reader:
         if verb not in _STANDING | _SITTING:
             return False
         subjects, word = st.children(k, "nsubj", "nsubjpass"), st.words[k]
-        if word.dep == "acl" and self.lower(word.head) in _ANYONE:  # "as seen by someone sitting on it"
+        if word.dep == "acl" and self.lower(word.head) in _ANYONE:  # "for a person sat on the daybed"
             return True
         when = any(self.lower(n) in _WHEN for n in st.children(k, "advmod", "mark"))  # "when seated on the settee"
         return all(self.lower(n) in _ANYONE | {"you", "i", "we"} for n in subjects) and (bool(subjects) or (
@@ -607,7 +607,7 @@ class _Reader:
         """Take the landmark at `pos` as where the viewer is ("viewed from the settee") when the cue
         takes it; at its front, foot or end, as what the viewer faces ("standing at the cot's foot")."""
         objects = self.cue_objects()
-        if any(self.lower(k) in BACK_REFERENCES for k in objects):  # "sitting on it": the thing just named
+        if any(self.lower(k) in BACK_REFERENCES for k in objects):  # "sat on it": the thing just named
             named = next((r.landmarks[0] for r in reversed(self.out.relations) if r.landmarks), None)
             if named is not None and not self.out.facing and not self.out.viewer_at:
                 self.out.viewer_at = named

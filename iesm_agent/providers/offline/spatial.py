@@ -393,7 +393,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
                                     for t in targets], bool)
             return np.where(named_after, 1.0, np.exp(-gap / geo.NEAR_GAP))
         # compared among the targets in the landmark's room when it holds two or more besides the landmark:
-        # "the chair farthest from the stove" is one of the stove's room's, not the farthest chair of the home
+        # "the stool farthest from the sink" is one of the sink's room's, not the farthest stool of the home
         # (landmarks in several rooms, as "the bookshelf" of a home with two: no one room)
         rooms = {scene.room_names[r] for r in mark_rows[0]}
         shared = np.array([scene.room_names[t] in rooms for t in targets], bool) & ~np.isin(targets, mark_rows[0])
