@@ -932,3 +932,12 @@ def test_nearest_and_farthest_compare_within_the_landmarks_room(tmp_path, query,
 def test_a_landmark_in_several_rooms_compares_the_whole_home(tmp_path):
     store = make_store(tmp_path, SINK_ROOMS + [box(8, "sink", (9.7, 3.5, 0.9), (0.4, 0.4, 0.2), room="shed")])
     assert spatial(store, "the stool farthest from a sink")[0] == 5  # two sinks: among every stool
+
+
+def test_a_landmark_the_labels_lack_is_found_by_the_words_said(tmp_path):
+    # no label is of the heater kind "boiler" names, but a caption says it: that instance is the landmark
+    store = make_store(tmp_path, [box(1, "tank", (0.3, 2.0, 1.2), (0.5, 0.4, 0.8), caption="A wall-hung gas boiler."),
+                                  box(2, "stool", (1.2, 2.0, 0.35), (0.35, 0.35, 0.7)),
+                                  box(3, "stool", (3.5, 2.0, 0.35), (0.35, 0.35, 0.7))])
+    assert spatial(store, "the stool nearest the boiler")[0] == 2
+    assert spatial(store, "the stool nearest the kiln") == []  # named nowhere: no guess

@@ -72,6 +72,9 @@ class Relation:
     kind: str  # a `_CUES` value, "extreme", "ordinal" or "in" (on a part of the landmark: "the cupboard's top shelf")
     landmarks: list[tuple[str, ...]] = field(default_factory=list)  # one tuple of canonical categories per landmark
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
+    #: the words that name each landmark as said ("range cooker"; none for a stand-in or a room): a map whose labels
+    #: lack the landmark's kinds may still name it so in a caption
+    landmark_names: list[str] = field(default_factory=list)
     #: extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of
     #: the target's kind, else the room's middle or a landmark's; closest/farthest: "group" for the others of its kind
     value: str = ""
@@ -357,13 +360,14 @@ class _Reader:
             if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in ("foot", "head"):
                 rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of its length
         attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
-        return self.add_landmark(rel, kinds, attrs, end)
+        return self.add_landmark(rel, kinds, attrs, end, "" if at == one else " ".join(self.toks[at:end]))
 
-    def add_landmark(self, rel: Relation, kinds: tuple[str, ...], attrs: tuple, end: int) -> bool:
-        """Add to `rel` a landmark of the categories `kinds` (none: a room's objects) described by `attrs`,
-        its phrase ending before token `end`; True."""
+    def add_landmark(self, rel: Relation, kinds: tuple[str, ...], attrs: tuple, end: int, names: str = "") -> bool:
+        """Add to `rel` a landmark of the categories `kinds` (none: a room's objects) described by `attrs` and
+        named `names`, its phrase ending before token `end`; True."""
         rel.landmarks.append(kinds)
         rel.landmark_attrs.append(attrs)
+        rel.landmark_names.append(names)
         self.last_landmark_end = end
         return True
 

@@ -128,13 +128,14 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
 
 @lru_cache(maxsize=512)
 def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...],
-             landmark: bool = False, by_text: bool = False) -> np.ndarray:
+             landmark: bool = False, by_text: bool = False, names: str = "") -> np.ndarray:
     """(N,) bool, read-only: instances of one of `cats` (or of a more general kind when none is:
     "kitchen table" finds a "table"; a landmark's, the one whose caption or room says "kitchen",
     if any; with `by_text`, a landmark of no related kind at all is the one whose text names it: an
     "oven" in "a gas cooker with an oven below", a point to be near or far from; not a thing to be on
-    or with, which a caption's passing "floor" or "handle" is not), narrowed to those matching `attrs`
-    best when any matches.
+    or with, which a caption's passing "floor" or "handle" is not; nor any kind, the one whose text says the
+    landmark's `names`: a "range cooker" labelled "stove"), narrowed to those matching `attrs` best when any
+    matches.
     Memoised by the scene and what is asked: the queries on one map name the same target and
     landmark kinds again and again (about 50 us per scene of 100 instances)."""
     lex = load_lexicon()
@@ -145,7 +146,7 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
         if (kind & said).any():
             kind = kind & said
         elif by_text and not kind.any():
-            kind = said
+            kind = said | np.array([bool(names) and _words(names) <= words for words in scene.words], bool)
     rooms = {v for k, v in attrs if k == "room"}  # a landmark's room ("the kitchen table"), when one is there
     in_room = kind & np.array([r in rooms for r in scene.rooms], bool) if rooms else kind
     kind = in_room if in_room.any() or not cats else kind  # no category: a room's objects ("nearest the den")
@@ -331,8 +332,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     boxes = scene.boxes
     tb = boxes.take(targets)
     marks, mark_rows = [], []  # the landmarks' boxes and the scene rows they come from (none for a room)
-    for cats, attrs in zip(rel.landmarks, rel.landmark_attrs):
-        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=rel.kind not in _CONTACT))
+    for cats, attrs, names in zip(rel.landmarks, rel.landmark_attrs, rel.landmark_names):
+        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=rel.kind not in _CONTACT,
+                                       names=names))
         if not len(rows):
             return None
         if rel.landmark_where in ("foot", "head"):
