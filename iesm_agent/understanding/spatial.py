@@ -72,7 +72,7 @@ class Relation:
     kind: str  # a `_CUES` value, "extreme", "ordinal" or "in" (on a part of the landmark: "the cupboard's top shelf")
     landmarks: list[tuple[str, ...]] = field(default_factory=list)  # one tuple of canonical categories per landmark
     landmark_attrs: list[tuple[tuple[str, str], ...]] = field(default_factory=list)
-    #: the words that name each landmark as said ("range cooker"; none for a stand-in or a room): a map whose labels
+    #: the words that name each landmark as said ("gas boiler"; none for a stand-in or a room): a map whose labels
     #: lack the landmark's kinds may still name it so in a caption
     landmark_names: list[str] = field(default_factory=list)
     #: extreme: large/small/tall/short/high/low/wide; ordinal: side or "landmark"; middle: "group" for the middle one of

@@ -134,7 +134,7 @@ def _of_kind(scene: _Scene, cats: tuple[str, ...], attrs: tuple[tuple[str, str],
     if any; with `by_text`, a landmark of no related kind at all is the one whose text names it: an
     "oven" in "a gas cooker with an oven below", a point to be near or far from; not a thing to be on
     or with, which a caption's passing "floor" or "handle" is not; nor any kind, the one whose text says the
-    landmark's `names`: a "range cooker" labelled "stove"), narrowed to those matching `attrs` best when any
+    landmark's `names`: a "boiler" labelled "tank"), narrowed to those matching `attrs` best when any
     matches.
     Memoised by the scene and what is asked: the queries on one map name the same target and
     landmark kinds again and again (about 50 us per scene of 100 instances)."""
