@@ -22,7 +22,7 @@ def env(tmp_path_factory):
 
 
 def test_ask_json_on_the_shipped_map(apartment_store, env):
-    out = iesm("ask", "apartment", "take me to the refrigerator", "--json", env=env)
+    out = iesm("ask", "apartment", "please take me to the refrigerator", "--json", env=env)
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     target = next(i.id for i in apartment_store.scene.instances if i.label == "refrigerator")

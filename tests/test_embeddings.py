@@ -118,10 +118,10 @@ def test_encoder_loading_is_reported_apart_from_query_latency(apartment_store, m
     monkeypatch.delenv("IESM_EMBEDDINGS", raising=False)
     retriever = Retriever(apartment_store, provider=OfflineModel())
     started = time.perf_counter()
-    first = retriever.ask("the yellow photo book")  # an (o,d) query asks for the encoder
+    first = retriever.ask("that yellow photo book")  # an (o,d) query asks for the encoder
     wall_ms = (time.perf_counter() - started) * 1000
     assert first.load_ms >= 1000 and first.latency_ms <= wall_ms - first.load_ms + 1
-    assert retriever.ask("the yellow photo book").load_ms == 0  # loaded (or failed) once per process
+    assert retriever.ask("that yellow photo book").load_ms == 0  # loaded (or failed) once per process
 
 
 @pytest.mark.slow

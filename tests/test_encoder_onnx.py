@@ -22,7 +22,7 @@ from iesm_agent.encoding.onnx_export import checksum_path, file_checksum  # noqa
 from iesm_agent.encoding.vector_store import VectorStore  # noqa: E402
 
 SENTENCES = [
-    "a comfortable couch", "the red leather chair in the office", "A café's crème brûlée!",
+    "a comfortable couch", "a red leather chair in the office", "A café's crème brûlée!",
     "where did I leave my keys?", "the 3 small potted plants by the window", "", "x",
     "something to sit on while reading, near the big bright window of the living room, "
     "preferably soft, blue and made of wood",

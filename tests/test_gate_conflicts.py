@@ -14,11 +14,11 @@ from test_retriever_apartment import the
 
 CASES = [
     # (query, the named category's instance, the expert that disagrees, what it picks instead)
-    ("the armchair in the office", ("armchair",), "room", ("chair", "office")),
+    ("that armchair in the office", ("armchair",), "room", ("chair", "office")),
     ("the sofa in the bedroom", ("sofa",), "room", ("bed",)),
     ("the desk in the kitchen", ("desk",), "room", ("table", "kitchen")),
-    ("the red sofa", ("sofa", None, "brown"), "desc", ("chair", "office")),  # no sofa is red: brown looks nearer than grey
-    ("the white armchair", ("armchair",), "desc", ("chair", "kitchen", "white")),
+    ("that red sofa", ("sofa", None, "brown"), "desc", ("chair", "office")),  # no sofa is red: brown looks nearer than grey
+    ("that white armchair", ("armchair",), "desc", ("chair", "kitchen", "white")),
 ]
 
 
@@ -61,12 +61,12 @@ def test_three_experts_three_picks(mtefr, apartment_store):
 
 def test_uniform_weights_let_the_majority_of_experts_decide(apartment_store):
     # gate off: the room and abstract experts outvote the object expert on a room conflict
-    uniform = Retriever(apartment_store, provider="offline", method="mtefr-uniform").ask("the armchair in the office")
+    uniform = Retriever(apartment_store, provider="offline", method="mtefr-uniform").ask("that armchair in the office")
     assert len(set(uniform.gate.values())) == 1
     assert uniform.instance_id == the(apartment_store, "chair", "office"), uniform.explain()
 
 
 def test_consistent_evidence_keeps_the_experts_in_agreement(mtefr, apartment_store):
-    res = mtefr.ask("the sink in the bathroom")
+    res = mtefr.ask("that sink in the bathroom")
     assert {ids[0] for e, ids in res.experts.items() if ids and e != "spatial"} == {the(apartment_store, "sink", "bathroom")}
     assert "experts agree on the top pick" in res.explain()

@@ -50,7 +50,7 @@ def test_a_landmark_named_alone_is_the_target_not_a_landmark():
 
 
 RELATIONS = [("the lamp standing on the nightstand", 34),
-             ("the lamp on the nightstand", 34), ("the picture that hangs over the sofa", 6),
+             ("that lamp on the nightstand", 34), ("the picture that hangs over the sofa", 6),
              ("the cabinet under the bathroom sink", 42), ("which plant is closest to the bed", 39),
              ("the lamp next to the desk", 56)]
 

@@ -1,6 +1,6 @@
 """The offline model's memos (per prompt block, per query reading, and across queries: category
 fits by what is asked, the spatial expert's scenes and kind masks) never change an answer: the
-MTEFR prompts of suite queries on the apartment map get the same replies whatever was asked
+MTEFR prompts of suite-like queries on the apartment map get the same replies whatever was asked
 before, in another order, or with every memo emptied before each prompt."""
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ from iesm_agent.understanding import analyse_query
 #: requests of several kinds: named categories, rooms, appearance, functions, relations, kin,
 #: an exclusion and a word the lexicon does not know
 QUERIES = ["the grey sofa in the living room", "somewhere to sleep", "the lamp next to the bed",
-           "the red leather chair in the office", "the smaller of the two bookshelves",
+           "a red leather chair in the office", "the smaller of the two bookshelves",
            "something to sit on in the kitchen", "the plant that is not on the table",
-           "the chair closest to the window", "a wooden table", "the thingamajig by the sofa",
-           "the tallest lamp", "where can I wash my hands", "the big sofa"]
+           "that chair closest to the window", "a wooden table", "the thingamajig by the sofa",
+           "the tallest lamp please", "where can I wash my hands", "the big sofa"]
 
 
 def _forget_everything() -> None:

@@ -50,8 +50,8 @@ CANDS = [{"id": i, "label": lbl, "room": room, "caption": cap, "tags": tags} for
 TABLE = [
     # (o)
     ("the sofa", "o", "obj", {2}, "sofa", None),
-    ("go to the couch", "o", "obj", {2}, "couch", None),
-    ("take me to the television", "o", "obj", {3}, "television", None),
+    ("please go to the couch", "o", "obj", {2}, "couch", None),
+    ("please take me to the television", "o", "obj", {3}, "television", None),
     ("find the tv", "o", "obj", {3}, "tv", None),
     ("the refrigerator", "o", "obj", {10}, "refrigerator", None),
     ("navigate to the fridge", "o", "obj", {10}, "fridge", None),
@@ -70,7 +70,7 @@ TABLE = [
     # (o, r)
     ("the chair in the kitchen", "or", ("obj", "room"), {14}, "chair", "kitchen"),
     ("the chair in the office", "or", ("obj", "room"), {7}, "chair", "office"),
-    ("go to the sink in the kitchen", "or", ("obj", "room"), {17}, "sink", "kitchen"),
+    ("please go to the sink in the kitchen", "or", ("obj", "room"), {17}, "sink", "kitchen"),
     ("the sink in the restroom", "or", ("obj", "room"), {9}, "sink", "restroom"),
     ("the armchair in the bedroom", "or", ("obj", "room"), {28}, "armchair", "bedroom"),
     ("the easy chair in the lounge", "or", ("obj", "room"), {1}, "easy chair", "lounge"),
@@ -81,10 +81,10 @@ TABLE = [
     ("the toilet in the washroom", "or", ("obj", "room"), {16}, "toilet", "washroom"),
     ("the shelf in the family room", "or", ("obj", "room"), {15}, "shelf", "family room"),
     # (o, d)
-    ("the beige velvet armchair", "od", ("obj", "desc"), {1}, "armchair", None),
+    ("that beige velvet armchair", "od", ("obj", "desc"), {1}, "armchair", None),
     ("the blue fabric armchair", "od", ("obj", "desc"), {28}, "armchair", None),
     ("the red leather chair", "od", ("obj", "desc"), {7}, "chair", None),
-    ("the black metal chair", "od", ("obj", "desc"), {14}, "chair", None),
+    ("that black metal chair", "od", ("obj", "desc"), {14}, "chair", None),
     ("the stainless steel fridge", "od", ("obj", "desc"), {10}, "fridge", None),
     ("the gold framed mirror", "od", ("obj", "desc"), {13}, "mirror", None),
     ("the small round wooden table", "od", ("obj", "desc"), {12}, "table", None),
@@ -95,7 +95,7 @@ TABLE = [
     ("the flat black TV", "od", ("obj", "desc"), {3}, "tv", None),
     # (o, r, d)
     ("the black chair in the kitchen", "ord", ("obj", "desc", "room"), {14}, "chair", "kitchen"),
-    ("the red leather chair in the office", "ord", ("obj", "desc", "room"), {7}, "chair", "office"),
+    ("that red leather chair in the office", "ord", ("obj", "desc", "room"), {7}, "chair", "office"),
     ("the white wooden cabinet in the kitchen", "ord", ("obj", "desc", "room"), {4}, "cabinet", "kitchen"),
     ("the beige velvety easy chair in the living room", "ord", ("obj", "desc", "room"), {1}, "easy chair", "living room"),
     ("the blue armchair in the bedroom", "ord", ("obj", "desc", "room"), {28}, "armchair", "bedroom"),

@@ -90,7 +90,7 @@ def spr(model, lib, query, kappa=2):
 # (query, ids that are right at the top, ids that are acceptable second)
 CASES = [
     # compound / unusual colour words; a named category gates every expert (no gold doorway)
-    ("the honey-colored little table", {4}),
+    ("that honey-colored little table", {4}),
     ("the blue-gray curtains", {13}),
     ("the pale blue drapes", {14}),
     # surface form beats family: mesh is a fabric, but "mesh" means the mesh chairs
@@ -110,7 +110,7 @@ CASES = [
     ("something to carry my documents in", {20}),
     ("something I can type on", {22}),
     ("where does my dog sleep", {23}),
-    ("where can I relieve myself", {24}),
+    ("where could I relieve myself", {24}),
     # a raw label phrase with a boundary word inside it is still the category
     ("take me to the set of towels", {30}),
 ]

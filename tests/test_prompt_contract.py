@@ -60,7 +60,7 @@ def test_the_six_prompts_of_a_query_share_one_byte_identical_prefix():
     """Gate and five experts: the same system message, then a user message whose first part
     (candidates, query) is identical; the task, focus and references come after it."""
     model = _Recorder()
-    res = Retriever(MapStore(open_map("apartment")), provider=model).ask("the lamp next to the sofa")
+    res = Retriever(MapStore(open_map("apartment")), provider=model).ask("that lamp next to the sofa")
     assert len(model.seen) == 6 and not res.failures
     systems = {m[0].text() for m in model.seen}
     users = [m[1].text() for m in model.seen]

@@ -164,8 +164,8 @@ def test_concurrent_calls_with_the_encoder_match_serial_ones(apartment_store, mo
     monkeypatch.delenv("IESM_EMBEDDINGS", raising=False)
     if get_encoder() is None:
         pytest.skip("sentence encoder not installed")
-    queries = ["the yellow photo book", "a cosy thing to read on", "the thingamajig by the sink",
-               "something shiny in the bathroom", "the red leather chair in the office",
+    queries = ["that yellow photo book", "a cosy thing to read on", "the thingamajig by the sink",
+               "something shiny in the bathroom", "a red leather chair in the office",
                "a soft blue seat near the window"] + suite_queries(18)
     service = MapService({"apartment": apartment_store})
 

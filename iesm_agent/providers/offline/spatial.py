@@ -376,7 +376,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             hit = geo.is_above(tb, lm)
         elif kind == "below":
             hit = geo.is_above(lm, tb).T
-        else:  # "the nightstand with the clock (on it)": the landmark rests on the target, or is
+        else:  # "a nightstand with a clock (on it)": the landmark rests on the target, or is
             # part of it as its caption says ("the seat with a green cushion")
             cats, attrs = rel.landmarks[0], {(k, v) for k, v in rel.landmark_attrs[0] if k != "room"}
             own = np.array([bool(scene.parts[t] & set(cats)) and attrs <= scene.attrs[t] for t in targets], bool)
