@@ -487,3 +487,9 @@ def test_a_use_read_past_a_dropped_word_is_one_phrase_of_the_parse():
     afford = analyse_query("Which thing here gives me the time?").afford
     assert afford.get("clock") == 1.0 and "sofa" not in afford
     assert analyse_query("could you turn the central heating down").afford.get("heater") == 1.0  # one phrase: kept
+
+
+def test_a_shape_word_heading_a_place_phrase_is_no_shape():
+    # "corner" names a shape before a noun ("a corner desk") but a place after a preposition
+    assert ("shape", "l-shaped") not in analyse_query("the stool at the south-west corner of the bench").attrs
+    assert ("shape", "round") in analyse_query("a stool that is round").attrs

@@ -941,3 +941,26 @@ def test_a_landmark_the_labels_lack_is_found_by_the_words_said(tmp_path):
                                   box(3, "stool", (3.5, 2.0, 0.35), (0.35, 0.35, 0.7))])
     assert spatial(store, "the stool nearest the boiler")[0] == 2
     assert spatial(store, "the stool nearest the kiln") == []  # named nowhere: no guess
+
+
+def test_a_compass_corner_of_a_thing_is_its_side():
+    # the compass word says which corner of the workbench; no corner of the room is meant
+    assert _relations("the stool at the south-east corner of the workbench") == [("south-east", [("table",)], "")]
+
+
+def test_the_compass_corner_of_a_table_picks_the_seat_there(tmp_path):
+    # a workbench in a workshop (x 0-4 m) with a stool at each corner; a stool in the far north-west
+    # corner of a study (x -4-0 m, further north-west than any of them)
+    seats = [(6, 0.8, 2.7), (7, 3.2, 2.7), (8, 0.8, 1.3), (9, 3.2, 1.3)]
+    store = make_store(tmp_path, [box(5, "workbench", (2.0, 2.0, 0.45), (2.0, 1.0, 0.9), room="workshop"),
+                                  *(box(i, "stool", (x, y, 0.35), (0.35, 0.35, 0.7), room="workshop") for i, x, y in seats),
+                                  box(10, "stool", (-3.5, 3.8, 0.35), (0.35, 0.35, 0.7), room="study")])
+    assert spatial(store, "the stool at the north-west corner of the workbench")[0] == 6
+
+
+def test_a_compass_side_prefers_what_lies_squarely_that_way(tmp_path):
+    # two stools 1.2 m from the bench: one due north of it, one north-east
+    store = make_store(tmp_path, [box(1, "workbench", (2.0, 2.0, 0.45), (1.0, 0.6, 0.9)),
+                                  box(2, "stool", (2.9, 2.8, 0.35), (0.35, 0.35, 0.7)),
+                                  box(3, "stool", (2.0, 3.2, 0.35), (0.35, 0.35, 0.7))])
+    assert spatial(store, "the stool due north of the workbench")[0] == 3

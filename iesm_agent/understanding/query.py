@@ -390,8 +390,9 @@ def _read_spans(lex: Lexicon, reading: _Reading, target: _Target, clause: set[in
             info.room_phrase = info.room_phrase or " ".join(surface[first:s.end])
             continue
         attr = [(k, v) for k, v in s.kinds if k in ATTRIBUTE_KINDS]
-        if attr and not s.has("cue") and not in_target and _outside_target(structure, surface, s, target, described):
-            continue  # "where do I hang my wet coat": wet is the coat, not the target
+        if attr and not s.has("cue") and not in_target and (_outside_target(structure, surface, s, target, described) or (
+                {k for k, _ in attr} == {"shape"} and word is not None and structure.words[word].dep == "pobj")):
+            continue  # "where do I hang my wet coat": wet is the coat; "at the corner of the desk": a place, no shape
         info.attrs = info.attrs + tuple(kv for kv in attr if kv not in info.attrs)
         attr_spans += [s] if attr else []
         if attr and not s.has("cue"):

@@ -506,6 +506,8 @@ class _Reader:
             return i  # "without opening my laptop": not done; "the mirror over the sink without the soap": the sink's
         if kind == "facing":
             return self.facing(i)
+        if kind == "corner" and before >= 0 and _CUES.get((toks[before],)) in COMPASS:
+            return i  # "the south-east corner of the workbench": a side of it, which the compass word says
         if kind in ("corner", "middle") and nxt == "of":
             return self.place_of(i, kind)
         if kind == "middle" and self.says_which_landmark(kind):

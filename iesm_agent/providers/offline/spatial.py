@@ -441,9 +441,13 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
         if not marks:
             return _rank_score(tb.center[:, :2] @ axis)
         lm = marks[0]
-        offset = (tb.center[:, None, :2] - lm.center[None, :, :2]) @ axis  # (T, L) along the side
+        apart = tb.center[:, None, :2] - lm.center[None, :, :2]  # (T, L, 2)
+        offset = apart @ axis  # (T, L) along the side
         dist = geo.center_distance(tb, lm)
         ok = (offset > 0.05) & (tb.ids[:, None] != lm.ids[None, :])
+        if kind in COMPASS:  # the nearer and the more squarely that way ("the north-west corner of the desk")
+            along = offset / np.maximum(np.linalg.norm(apart, axis=2), 1e-6)
+            return np.where(ok, (1.0 + along) / 2.0 / (1.0 + dist), 0.0).max(axis=1)
         return np.where(ok, 1.0 / (1.0 + dist), 0.0).max(axis=1)
     # ordinal: order along the side (or by distance to the landmark), pick the n-th
     if rel.value == "landmark" and marks:
