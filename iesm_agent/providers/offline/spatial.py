@@ -332,9 +332,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     boxes = scene.boxes
     tb = boxes.take(targets)
     marks, mark_rows = [], []  # the landmarks' boxes and the scene rows they come from (none for a room)
+    by_text = rel.kind not in _CONTACT  # (the words said matter only then: one memo entry per kind otherwise)
     for cats, attrs, names in zip(rel.landmarks, rel.landmark_attrs, rel.landmark_names):
-        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=rel.kind not in _CONTACT,
-                                       names=names))
+        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=by_text, names=names if by_text else ""))
         if not len(rows):
             return None
         if rel.landmark_where in ("foot", "head"):
@@ -396,7 +396,7 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
             return np.where(named_after, 1.0, np.exp(-gap / geo.NEAR_GAP))
         # compared among the targets in the landmark's room when it holds two or more besides the landmark:
         # "the stool farthest from the sink" is one of the sink's room's, not the farthest stool of the home
-        # (landmarks in several rooms, as "the bookshelf" of a home with two: no one room)
+        # (landmarks in several rooms, as a home's two sinks: no one room)
         rooms = {scene.room_names[r] for r in mark_rows[0]}
         shared = np.array([scene.room_names[t] in rooms for t in targets], bool) & ~np.isin(targets, mark_rows[0])
         among = shared if len(rooms) == 1 and None not in rooms and shared.sum() >= 2 else np.ones(len(targets), bool)
