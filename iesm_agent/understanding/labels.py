@@ -71,11 +71,7 @@ def _phrase_concepts(lex: Lexicon, words: list[str]) -> dict[str, float]:
     head = spans[-1]
     if len(spans) > 1 and core[head.start] in lex.words["weak_heads"] and head.end - head.start == 1:
         head = spans[-2]  # "mirror frame" -> mirror
-    out: dict[str, float] = {}
-    for s in spans:
-        for c in s.values("cat"):
-            out[c] = max(out.get(c, 0.0), 1.0 if s is head else _SECONDARY_WEIGHT)
-    return out
+    return {c: 1.0 if c in head.values("cat") else _SECONDARY_WEIGHT for s in spans for c in s.values("cat")}
 
 
 @lru_cache(maxsize=65536)

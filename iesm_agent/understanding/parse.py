@@ -200,11 +200,9 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
-    phrase = None
-    if target is not None:  # its noun phrase: compounds, adjectives, numbers and possessors before it, no determiners
-        first = min([target] + [c.left_edge.i for c in doc[target].lefts if c.dep_ in (
-            "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")])
-        phrase = first, target
+    # its noun phrase: compounds, adjectives, numbers and possessors before it, no determiners
+    phrase = None if target is None else (min([target] + [c.left_edge.i for c in doc[target].lefts if c.dep_ in (
+        "compound", "amod", "nmod", "nummod", "poss", "advmod", "npadvmod", "quantmod")]), target)
     # what the request wants out of: the object of "leave"/"exit" or the noun after "out of" ("out of this garage")
     leaving = next((t.i for t in doc if request[0] <= t.idx + at < request[1] and (
         t.dep_ == "dobj" and t.head.lemma_ in ("leave", "exit")
@@ -240,10 +238,8 @@ def _choose_sentence(readings: list[tuple[str, int | None]]) -> int | None:
     said = sorted(found["description"] + found["scene"])
     if said and not found["request"] and (said[0] in found["description"] or not found["personal"]):
         return said[0]
-    for wanted, pick in (("request", -1), ("personal", -1)):
-        if found[wanted]:
-            return found[wanted][pick]
-    return next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
+    chosen = found["request"] or found["personal"]
+    return chosen[-1] if chosen else next((i for i, (kind, _) in enumerate(readings) if kind != "empty"), None)
 
 
 def _sentence_target(doc, sent) -> tuple[str, int | None]:
