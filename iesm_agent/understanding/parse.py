@@ -299,7 +299,6 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "description", shown  # "there is a rug under this table": the demonstrative names the target
     placeholder = subject is not None and subject.lower_ in TARGET_PRONOUNS  # "the thing is a kettle": the kettle
     found = _noun_of(subject) if subject is not None and not (placeholder and named is not None) else None
-    # else the noun named, or the verb's object
     found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
     return ("request" if question else "scene" if scene else "description"), found

@@ -140,7 +140,7 @@ def _parsed_target(structure: Structure, surface: list[_Token], spans: list[Span
     head = next((s for s in spans if s.start <= index < s.end), None)
     if head is not None and head.has("gen"):  # "which appliance", "the seating": a class, read as one
         return _Target(min(phrase_start, head.start), head.end, None, structure.target)
-    if head is None or not head.has("cat") or not set(head.values("cat")) - _UNSPECIFIC:
+    if head is None or not set(head.values("cat")) - _UNSPECIFIC:
         return None  # not a kind the lexicon knows, a room, or "the thing": read from the word order
     following = {s.start: s for s in spans if s.has("cat")}
     # a compound the parse split ("the notebook pc", one space between as written): its last noun
@@ -291,7 +291,6 @@ def analyse_query(text: str) -> QueryInfo:
     starts = {k: clause_landmark(categories, surface, k) for k, token in enumerate(surface)
               if token in STRANDABLE and is_stranded(surface, k + 1, clause_final_words(reading.text))}
     clause = {i for k, start in starts.items() if start is not None for i in range(start, k + 1)}
-    # the target phrase: from the parse when it names a known kind, else from the word order
     target = _parsed_target(reading.structure, surface, reading.spans) or _ordered_target(lex, reading, clause)
     info.abstract = any(t in lex.words["abstract"] for t in reading.lemmas[target.start:target.end])
     afford, attr_spans, landmark_words = _read_spans(lex, reading, target, clause, info)
