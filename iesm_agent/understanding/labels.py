@@ -84,10 +84,23 @@ def text_slots(text: str) -> tuple[tuple[Slot, ...], frozenset[str]]:
     for chunk in re.split(r"[,;:.()/|!?]+", text):
         lemmas = [lex.lemma(t) for t in lex.tokens(chunk)]
         stems.update(word_stems(lex, lemmas))
-        spans = [found for sp in lex.scan(lemmas) for found in (
+        spans = [found for sp in lex.scan(lemmas, fits=_not_measured(lemmas)) for found in (
             [sp] if any(k in ATTRIBUTE_KINDS for k, _ in sp.kinds) else modifier_spans(lex, lemmas, sp))]
         slots.extend(read_slots(lex, lemmas, spans)[0])
     return tuple(dict.fromkeys(slots)), frozenset(stems)
+
+
+#: length units a caption states a dimension in ("about 1.3 m tall", "25 cm wide")
+_UNITS = frozenset({"m", "cm", "mm", "metre", "meter", "centimetre", "centimeter", "ft", "foot", "inch"})
+
+
+def _not_measured(lemmas: list[str]):
+    """A `Lexicon.scan` filter: a size word after a number and a unit gives a dimension, not a
+    size ("1.3 m tall" says how tall, not that it is tall)."""
+    def fits(start: int, end: int, kinds: tuple[tuple[str, str], ...]) -> bool:
+        return not (start >= 2 and lemmas[start - 1] in _UNITS and lemmas[start - 2].isdigit()
+                    and all(k == "size" for k, _ in kinds))
+    return fits
 
 
 @lru_cache(maxsize=4096)
@@ -125,7 +138,8 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
     tags = data.get("tags")
     parts = [label, caption] + ([_as_text(v) for v in tags.values()] if isinstance(tags, dict) else [])
     lemmas, slots = [[lex.lemma(t) for t in lex.tokens(p)] for p in parts], [text_slots(p) for p in parts]
-    attrs = [frozenset({(k, v) for s in lex.scan(ls) for k, v in s.kinds if k in ATTRIBUTE_KINDS}) for ls in lemmas]
+    attrs = [frozenset({(k, v) for s in lex.scan(ls, fits=_not_measured(ls)) for k, v in s.kinds
+                        if k in ATTRIBUTE_KINDS}) for ls in lemmas]
     return ident, Record(concepts=tuple(sorted(concepts.items(), key=lambda kv: (-kv[1], kv[0]))), label=label,
                          room=room_of(room), attrs=frozenset().union(*attrs), label_words=frozenset(lemmas[0]),
                          words=frozenset().union(*map(frozenset, lemmas)),

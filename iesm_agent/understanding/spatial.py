@@ -81,6 +81,7 @@ class Relation:
     order: int = 0  # ordinal: 1-based, -1 = last
     landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of its instances; "foot" / "head": its end
     negated: bool = False     # "the bowl that is not on the shelf"
+    said: bool = False        # extreme: a size word said of the target ("the small lamp"), not a comparison
 
 
 @dataclass
@@ -726,9 +727,16 @@ class _Reader:
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
         elif info.unknown_target:
             out.unknown_target = True
-        # a size word on the target ("the small vase on the dresser") ranks within the relation
-        out.relations += [Relation("extreme", value=SIZE_EXTREMES[v]) for k, v in out.attrs
-                          if k == "size" and v in SIZE_EXTREMES and out.relations
+        # a size word on the target ranks within the relation ("the small vase on the dresser"); when it is
+        # all that is said of a kind named by its own noun, with a definite article, it compares the target
+        # with the others of that kind ("the little wardrobe"), not when it is one detail of a description
+        # ("the short green vase") or says what kind of thing will do ("a tall stool")
+        alone = (out.named and not self.lex.generic.keys() & set(out.target)
+                 and all(s.kind == "size" for s in info.slots) and any(
+                     w.head == self.words[target] and w.dep == "det" and w.text.lower() in ("the", "this", "that")
+                     for w in self.structure.words))
+        out.relations += [Relation("extreme", value=SIZE_EXTREMES[v], said=True) for k, v in out.attrs
+                          if k == "size" and v in SIZE_EXTREMES and (out.relations or alone)
                           and not any(r.kind == "extreme" for r in out.relations)]
         return out
 

@@ -535,18 +535,33 @@ def weigh(prompt: Prompt, reply: dict) -> dict:
     """Adjust a gate reply for experts whose description declares spatial relations: 4 when the
     query names the target's kind and states a relation, comparison, order or viewpoint (then
     every other expert at most `_OTHERS_CAP`, since a category, room or colour alone cannot pick
-    among same-kind objects), 2 beside the others when the kind is not named, else 0."""
+    among same-kind objects), 2 beside the others when the kind is not named, else 0 (also for a
+    size word alone where the captions of the kind speak of size)."""
     spatial = [e["name"] for e in prompt.experts if GATE_MARKER in str(e.get("gate_description", "")).lower()]
     if not spatial:
         return reply
     sq = parse_query(prompt.query)
     scores, hints = dict(reply.get("scores", {})), dict(reply.get("hints", {}))
     named = sq.named
-    if sq.relations and named:
+    # a size word alone ("the little wardrobe") is the description's when captions of that kind speak
+    # of size; the boxes decide it only where no words do (an object list's measured captions)
+    relations = bool(sq.relations) and not (all(r.said for r in sq.relations) and _sizes_in_words(prompt, sq.target))
+    if relations and named:
         scores = {name: min(int(s), _OTHERS_CAP) for name, s in scores.items()}
     for name in spatial:
         # with the target's kind unnamed ("what I dry my hands with, by the sink") the kind is
         # evidence as strong as the relation: the spatial expert then shares the decision
-        scores[name] = (4 if named else 2) if sq.relations else 0
+        scores[name] = (4 if named else 2) if relations else 0
         hints[name] = sq.words
     return {"scores": scores, "hints": hints}
+
+
+def _sizes_in_words(prompt: Prompt, target: tuple[str, ...]) -> bool:
+    """True when a candidate of one of the `target` kinds has a size word in its label, caption or tags."""
+    lex = load_lexicon()
+    for line in prompt.candidate_lines:
+        one = candidate_from_line(line)
+        if one is not None and any(s.kind == "size" for s in one[1].slots) and any(
+                lex.concept_sim(t, c) >= 0.9 for t in target for c, w in one[1].concepts if w >= 1.0):
+            return True
+    return False
