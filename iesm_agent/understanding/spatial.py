@@ -81,7 +81,7 @@ class Relation:
     order: int = 0  # ordinal: 1-based, -1 = last
     landmark_where: str = ""  # "corner" / "middle" / "wall" / a side: which of its instances; "foot" / "head": its end
     negated: bool = False     # "the bowl that is not on the shelf"
-    said: bool = False        # extreme: a size word said of the target ("the small lamp"), not a comparison
+    said: bool = False        # extreme: read from a size word on the target ("the little wardrobe"), not "smallest"
 
 
 @dataclass
