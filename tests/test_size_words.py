@@ -39,6 +39,8 @@ def test_a_bare_size_word_on_a_named_kind_is_a_comparison():
     # one detail among others of a description, or said of a class noun: no comparison
     assert parse_query("walk over to the little oak wardrobe").relations == []
     assert parse_query("walk over to the tiny container").relations == []
+    # with an indefinite article it says what kind of wardrobe will do
+    assert parse_query("walk over to a little wardrobe").relations == []
 
 
 def test_boxes_decide_a_size_word_where_no_caption_speaks_of_size(tmp_path):

@@ -13,7 +13,7 @@ from .clauses import (AUXILIARIES, BACK_REFERENCES, INVERSE_RELATION, TARGET_PRO
                       is_stranded, near_room)
 from .motion import MOTION_VERBS, POSTURE_VERBS, is_destination
 from .parse import NAMING, NOUNS, STAND_INS, Word, normalise, parse_request
-from .query import analyse_query
+from .query import QueryInfo, analyse_query
 from .text import SENTENCE_MARK, clause_breaks, lemmatise
 
 #: relation cues (word sequences) by the relation they name, from the lexicon's language file
@@ -727,18 +727,20 @@ class _Reader:
             out.target = tuple(c for c, w in info.afford.items() if w >= 1.0)
         elif info.unknown_target:
             out.unknown_target = True
-        # a size word on the target ranks within the relation ("the small vase on the dresser"); when it is
-        # all that is said of a kind named by its own noun, with a definite article, it compares the target
-        # with the others of that kind ("the little wardrobe"), not when it is one detail of a description
-        # ("the short green vase") or says what kind of thing will do ("a tall stool")
-        alone = (out.named and not self.lex.generic.keys() & set(out.target)
-                 and all(s.kind == "size" for s in info.slots) and any(
-                     w.head == self.words[target] and w.dep == "det" and w.text.lower() in ("the", "this", "that")
-                     for w in self.structure.words))
-        out.relations += [Relation("extreme", value=SIZE_EXTREMES[v], said=True) for k, v in out.attrs
-                          if k == "size" and v in SIZE_EXTREMES and (out.relations or alone)
-                          and not any(r.kind == "extreme" for r in out.relations)]
+        # a size word on the target ranks within the relation ("the small vase on the dresser"), or on its own
+        sizes = [SIZE_EXTREMES[v] for k, v in out.attrs if k == "size" and v in SIZE_EXTREMES]
+        if sizes and not any(r.kind == "extreme" for r in out.relations) and (
+                out.relations or self.size_alone(out, info, target)):
+            out.relations += [Relation("extreme", value=v, said=True) for v in sizes]
         return out
+
+    def size_alone(self, out: SpatialQuery, info: QueryInfo, target: int | None) -> bool:
+        """A size word compares the target with the others of its kind when it is all a definite request
+        says of a kind named by its own noun ("the little wardrobe"); not when it is one detail of a
+        description ("the short green vase") or says what kind of thing will do ("a tall stool")."""
+        return (out.named and not self.lex.generic.keys() & set(out.target) and all(s.kind == "size" for s in info.slots)
+                and any(w.head == self.words[target] and w.dep == "det" and w.text.lower() in ("the", "this", "that")
+                        for w in self.structure.words))
 
 
 @lru_cache(maxsize=4096)
