@@ -86,6 +86,18 @@ def test_a_continuation_sentence_joins_the_request_and_a_reason_sentence_is_cont
     assert parse_request(text).request == (0, len(text)) and parse_request(text).context == ()
 
 
+def test_a_sentence_opening_with_a_pronoun_describes_the_target_even_when_it_names_a_noun():
+    for text, said in (("Find me the jug. It is green plastic.", [("color", "green"), ("material", "plastic")]),
+                       ("Take me to the stool. Its seat is orange leather.", [("color", "orange"),
+                                                                               ("material", "leather")])):
+        structure = parse_request(text)
+        assert structure.request == (0, len(text)) and structure.context == ()
+        info = analyse_query(text)
+        assert all(attr in info.attrs for attr in said), info.attrs
+    text = "Take me to the mug. The kettle is red."  # a later sentence about another thing is no more of the request
+    assert parse_request(text).context == ((20, len(text)),)
+
+
 def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sentence():
     info = analyse_query("this is a leather sofa. it is facing a glass coffee table.")
     assert info.targets["sofa"] == 1.0 and "coffee table" not in info.targets and "coffee table" in info.landmarks

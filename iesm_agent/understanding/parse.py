@@ -195,8 +195,9 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         chosen = min(chosen, next(i for i, s in enumerate(sentences) if s.start <= target < s.end))
     lemma = doc[target].lemma_ if target is not None else None
     while request_end < len(sentences) and (readings[request_end][0] in ("continuation", "empty") or (
-            readings[request_end][1] is not None and doc[readings[request_end][1]].lemma_ == lemma)):
-        request_end += 1  # "It is white.", "The dresser is a dark box.": more about the same target
+            readings[request_end][1] is not None and doc[readings[request_end][1]].lemma_ == lemma)
+            or _opening(sentences[request_end]).lower_ in CONTINUATIONS - _POINTING):
+        request_end += 1  # "It is white.", "The dresser is a dark box.", "Its lid is red metal.": more about the target
     request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
                     if not chosen <= i < request_end)
@@ -251,7 +252,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
         return "empty", None
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
-    first = next((t for t in sent if not t.is_punct), root)
+    first = _opening(sent)
     pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in _POINTING
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
@@ -302,6 +303,11 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
     return ("request" if question else "scene" if scene else "description"), found
+
+
+def _opening(sent):
+    """The sentence's first word that is no punctuation (its root if it has none)."""
+    return next((t for t in sent if not t.is_punct), sent.root)
 
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
