@@ -41,13 +41,25 @@ _ON_MAP_FIT = 0.6
 
 def _named_on_map(q: QueryInfo, lines: tuple[str, ...]) -> bool:
     """True when some candidate's label is the category the query names (or a kind of it), or
-    when the prompt shows no candidates to check against. Reads the label fit of the scorer's
-    candidate matrix, which the experts' prompts of the same query reuse."""
+    when the prompt shows no candidates to check against; False also when the query names a room
+    that holds no candidate of that category but one whose label, caption or tags say the request's
+    name for it ("the wardrobe in the den" and the den's "storage unit", captioned "a tall oak
+    wardrobe"): the name is then the speaker's word for what the room has. Reads the
+    label fit of the scorer's candidate matrix, which the experts' prompts of the same query reuse."""
     if not q.named:
         return True
     block = _parse_candidates(lines)
+    if not len(block.ids):
+        return True
     comp = _candidate_matrix(q, block)
-    return not len(block.ids) or float(comp[:, _LABEL].max()) >= _ON_MAP_FIT
+    fits, room = comp[:, _LABEL], comp[:, _ROOM]
+    if any(w >= 1.0 for w in q.rooms.values()) and room.max() > 0.0:
+        inside = room >= room.max()  # the candidates of the room named
+        said = {stem(w) for w in q.head_words}
+        if said and float(fits[inside].max()) < _ON_MAP_FIT and any(
+                said <= block.records[i].stems for i in np.flatnonzero(inside)):
+            return False
+    return float(fits.max()) >= _ON_MAP_FIT
 
 
 def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]:
