@@ -505,3 +505,9 @@ def test_a_shape_word_heading_a_place_phrase_is_no_shape():
     # "corner" names a shape before a noun ("a corner desk") but a place after a preposition
     assert ("shape", "l-shaped") not in analyse_query("the stool at the south-west corner of the bench").attrs
     assert ("shape", "round") in analyse_query("a stool that is round").attrs
+
+
+def test_a_thing_of_the_speakers_is_no_spatial_target_when_the_parse_names_none():
+    text = "I would rather not dig out my tablet; I only want to read the date hanging above the fireplace."
+    assert "tablet" not in parse_query(text).target
+    assert parse_query("take me to my bed").target == ("bed",)  # the parse's target, the speaker's or not
