@@ -349,12 +349,12 @@ def test_a_kind_absent_from_the_named_room_is_weighed_less_where_that_room_has_o
     # the den has no wardrobe by label, but its storage unit's caption calls itself one: the name may be the
     # speaker's word for it; a room whose candidates say nothing of the kind leaves the category decisive
     described = [{"id": 1, "label": "wardrobe", "room": "bedroom", "caption": "A white two-door wardrobe."},
-                 {"id": 2, "label": "storage unit", "room": "den", "caption": "A tall oak wardrobe with a mirror."},
+                 {"id": 2, "label": "storage unit", "room": "den", "caption": "A tall pine wardrobe with a mirror."},
                  {"id": 3, "label": "desk", "room": "den", "caption": "A pine desk."}]
     assert _gate(model, lib, "the wardrobe in the den", described)["obj"] == 2
-    silent = [dict(described[1], caption="A tall oak unit with a mirror."), described[0], described[2]]
+    silent = [dict(described[1], caption="A tall pine unit with a mirror."), described[0], described[2]]
     assert _gate(model, lib, "the wardrobe in the den", silent)["obj"] == 4
-    assert _gate(model, lib, "the oak wardrobe", described)["obj"] == 4  # no room named
+    assert _gate(model, lib, "the pine wardrobe", described)["obj"] == 4  # no room named
 
 
 @pytest.mark.parametrize("query, purpose", [

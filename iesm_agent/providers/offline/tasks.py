@@ -43,7 +43,7 @@ def _named_on_map(q: QueryInfo, lines: tuple[str, ...]) -> bool:
     """True when some candidate's label is the category the query names (or a kind of it), or
     when the prompt shows no candidates to check against; False also when the query names a room
     that holds no candidate of that category but one whose label, caption or tags say the request's
-    name for it ("the wardrobe in the den" and the den's "storage unit", captioned "a tall oak
+    name for it ("the wardrobe in the den" and the den's "storage unit", captioned "a tall pine
     wardrobe"): the name is then the speaker's word for what the room has. Reads the
     label fit of the scorer's candidate matrix, which the experts' prompts of the same query reuse."""
     if not q.named:
