@@ -24,6 +24,8 @@ CONTINUATIONS = frozenset({"it", "its", "it's", "they", "this", "that", "these",
 STAND_INS = frozenset({"one", "ones", "it", "them", "there"})
 #: demonstratives that point at a thing ("so that lamp"), whatever the tagger calls them
 _POINTING = frozenset({"that", "this", "these", "those"})
+#: a sentence opening with one of these goes on about the target ("It is white.", "Its lid is red metal.")
+_BACK_POINTING = CONTINUATIONS - _POINTING
 #: subjects that make a statement about the speaker or another person: a reason, not a request ("I burnt the toast")
 _PERSONAL = frozenset({"i", "we", "my", "our", "me", "us", "he", "she", "his", "her", "him"})
 #: vessels that count out what the speaker wants ("a jug of lemonade"): the lemonade is wanted
@@ -196,7 +198,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
     lemma = doc[target].lemma_ if target is not None else None
     while request_end < len(sentences) and (readings[request_end][0] in ("continuation", "empty") or (
             readings[request_end][1] is not None and doc[readings[request_end][1]].lemma_ == lemma)
-            or _opening(sentences[request_end]).lower_ in CONTINUATIONS - _POINTING):
+            or _opening(sentences[request_end]).lower_ in _BACK_POINTING):
         request_end += 1  # "It is white.", "The dresser is a dark box.", "Its lid is red metal.": more about the target
     request = (sentences[chosen].start_char + at, sentences[request_end - 1].end_char + at)
     context = tuple((s.start_char + at, s.end_char + at) for i, s in enumerate(sentences)
@@ -253,7 +255,7 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     root = sent.root
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = _opening(sent)
-    pronoun = first.lower_ in CONTINUATIONS and first.lower_ not in _POINTING
+    pronoun = first.lower_ in _BACK_POINTING
     if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
         return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:

@@ -35,7 +35,7 @@ _HEIGHT_NOUNS = {"top": "high", "bottom": "low"}
 _ORDINALS = {word: int(n) for n, words in read_data("language.json")["ordinals"].items() for word in words}
 #: relations a side or middle word names, also made superlative ("rightmost")
 _SIDES = frozenset({"left", "right", "front", "middle"})
-#: possessives that make a thing the speaker's ("my phone"): no target when the parse names none
+#: possessives that make a thing the speaker's ("my tablet"): no target when the parse names none
 _SPEAKERS = frozenset({"my", "our"})
 #: words that negate the relation that follows ("not on the table", "isn't in the corner")
 _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
@@ -689,7 +689,7 @@ class _Reader:
         return i
 
     def speakers(self, j: int) -> bool:
-        """True when the span at `j` names a thing of the speaker's ("my phone", "our old rug")."""
+        """True when the span at `j` names a thing of the speaker's ("my tablet", "our old rug")."""
         return any(self.lower(p) in _SPEAKERS for p in self.structure.children(self.words[j], "poss"))
 
     def target(self) -> SpatialQuery:
@@ -699,7 +699,7 @@ class _Reader:
         target = self.target_at if self.target_at is not None else next(
             (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
              and self.words[j] not in self.structure.lacking  # nor what the request rules out
-             and not self.speakers(j)  # nor a thing of the speaker's ("my phone is flat")
+             and not self.speakers(j)  # nor a thing of the speaker's ("my tablet is flat")
              and not set(self.kinds[j]) <= info.excluded_targets), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
