@@ -41,10 +41,9 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
             overlap = overlap | {stem(w) for w in load_lexicon().tokens(label) if len(w) > 2}
         else:
             label = _nearest(encoder, info.unknown_target, labels)
-        concepts = label_concepts(label) if label is not None else ()
-        targets.update({c: 1.0 for c, w in concepts if w >= concepts[0][1]})
+        targets.update({c: 1.0 for c in label_kinds(label)})
     if info.unknown_room:
-        room = _misspelt_label(info.unknown_room, rooms) or _nearest(encoder, info.unknown_room, rooms)
+        room = map_word(info.unknown_room, rooms, encoder)
         if room is not None:
             found_rooms[room] = 1.0
     named, placed = (targets, overlap) != (info.targets, info.overlap), found_rooms != info.rooms
@@ -57,6 +56,18 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
         _grounded.clear()
     _grounded[key] = grounded
     return grounded
+
+
+def map_word(phrase: str, options: Sequence[str], encoder: Any) -> str | None:
+    """The one of `options` (map labels or rooms) `phrase` misspells, else the nearest by the
+    encoder (`_nearest`); None when neither is sure."""
+    return _misspelt_label(phrase, options) or _nearest(encoder, phrase, options)
+
+
+def label_kinds(label: str | None) -> tuple[str, ...]:
+    """The categories a map label stands for most (none for None)."""
+    concepts = label_concepts(label) if label is not None else ()
+    return tuple(c for c, w in concepts if w >= concepts[0][1])
 
 
 def _misspelt_label(phrase: str, options: Sequence[str]) -> str | None:

@@ -39,7 +39,7 @@ class OfflineModel(Model):
         if prompt.task == contract.GATE:
             return spatial.weigh(prompt, tasks.gate(prompt))
         if prompt.task == contract.RANK_GEOMETRY:
-            return spatial.rank(prompt)
+            return spatial.rank(prompt, self.encoder)
         if prompt.task == contract.RANK:
             return tasks.rank(prompt, self.encoder)
         if prompt.task == contract.KEYWORD:

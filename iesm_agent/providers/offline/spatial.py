@@ -5,20 +5,25 @@ window", "the shorter of the two vases", "facing the sofa, the lamp on the right
 target kind, colour/material words and relations to landmark categories, then scores the
 candidates of the target kind from the geometry fenced in the prompt (`center`, `size`,
 `z_range`, `on`, `under`), with landmarks found by category among the candidates and the
-reference objects. No relation, no target, or a landmark the map lacks: an empty ranking.
+reference objects; a landmark to be near or far from whose kind the map lacks is read as the map
+label its name misspells or is nearest to ("the doorway" where the map has a "door"). No relation,
+no target, or a landmark the map lacks even so: an empty ranking.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 
 from ...lexicon import load_lexicon
 from ...store import geometry as geo
-from ...understanding import Slot, analyse_query, candidate_from_line, label_concepts, room_of
+from ...understanding import Slot, analyse_query, candidate_from_line, label_concepts, label_kinds, map_word, room_of
 from ...understanding.spatial import COMPASS, SIZE_EXTREMES, Relation, parse_query
 from .looks import colour_nearness, own_colours
 from .prompt import Prompt
@@ -43,6 +48,7 @@ class _Scene:
     on: list[frozenset[int]]
     under: list[frozenset[int]]
     is_candidate: np.ndarray
+    labels: list[str]
     label_words: list[frozenset[str]]
     words: list[frozenset[str]]    # lemmas of each line's label, caption, tags and room
     parts: list[frozenset[str]]    # categories each line's caption names ("with a green seat cushion")
@@ -62,6 +68,7 @@ class _Line:
     room_name: str | None
     on: frozenset[int]
     under: frozenset[int]
+    label: str
     label_words: frozenset[str]
     words: frozenset[str]
     parts: frozenset[str]
@@ -91,7 +98,7 @@ def _read_line(line: str) -> _Line | None:
                  attrs=record[1].attrs if record else frozenset(),
                  room=room_of(str(data["room"])) if data.get("room") else None,
                  room_name=str(data["room"]) if data.get("room") else None,
-                 on=ids(data.get("on")), under=ids(data.get("under")),
+                 on=ids(data.get("on")), under=ids(data.get("under")), label=str(data.get("label") or ""),
                  label_words=record[1].label_words if record else frozenset(),
                  words=record[1].words | record[1].room_words if record else frozenset(),
                  parts=frozenset(v for sp in lex.scan([lex.lemma(t) for t in lex.tokens(str(data.get("caption") or ""))])
@@ -121,7 +128,8 @@ def _scene_of(candidate_lines: tuple[str, ...], reference_lines: tuple[str, ...]
     return _Scene(boxes=boxes, concepts=[r.concepts for r, _ in keep], attrs=[r.attrs for r, _ in keep],
                   rooms=[r.room for r, _ in keep], room_names=[r.room_name for r, _ in keep],
                   on=[r.on for r, _ in keep], under=[r.under for r, _ in keep],
-                  is_candidate=np.array([c for _, c in keep], bool), label_words=[r.label_words for r, _ in keep],
+                  is_candidate=np.array([c for _, c in keep], bool), labels=[r.label for r, _ in keep],
+                  label_words=[r.label_words for r, _ in keep],
                   words=[r.words for r, _ in keep], parts=[r.parts for r, _ in keep],
                   colours=[r.colours for r, _ in keep])
 
@@ -327,14 +335,45 @@ _CONTACT = ("on", "in", "under", "above", "below", "with")
 _MET = 0.7
 
 
+def _landmarks(scene: _Scene, rel: Relation, cats: tuple[str, ...], attrs: tuple[tuple[str, str], ...],
+               names: str) -> np.ndarray:
+    """(N,) bool: the scene's instances that are one landmark of `rel` (`_of_kind`; the words said
+    matter only for a relation of no contact: one memo entry per kind otherwise)."""
+    by_text = rel.kind not in _CONTACT
+    return _of_kind(scene, cats, attrs, landmark=True, by_text=by_text, names=names if by_text else "")
+
+
+def _map_kinds(scene: _Scene, phrase: str, encoder: Callable[[], Any] | None) -> tuple[str, ...]:
+    """The categories of the scene's label that `phrase` misspells or is nearest to (`map_word`);
+    none when no label is sure."""
+    labels = sorted({label for label in scene.labels if label})
+    if not phrase or not labels:
+        return ()
+    return label_kinds(map_word(phrase, labels, encoder() if encoder is not None else None))
+
+
+def _relations_on_map(scene: _Scene, relations: list[Relation], encoder: Callable[[], Any] | None) -> list[Relation]:
+    """`relations`, each landmark kind the scene lacks read as the scene label its name misspells
+    or is nearest to (`_map_kinds`: "the doorway" where the map has a "door"), for a point to be
+    near or far from; not for a thing to be on or with, which a caption's part may be ("the chair
+    with a cup holder"); a landmark no label is sure of stays as said."""
+    out = []
+    for rel in relations:
+        marks = [_map_kinds(scene, names, encoder)
+                 if cats and rel.kind not in _CONTACT and not _landmarks(scene, rel, cats, attrs, names).any()
+                 else () for cats, attrs, names in zip(rel.landmarks, rel.landmark_attrs, rel.landmark_names)]
+        out.append(rel if not any(marks) else dataclasses.replace(
+            rel, landmarks=[found or cats for found, cats in zip(marks, rel.landmarks)]))
+    return out
+
+
 def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _Viewpoint) -> np.ndarray | None:
     """(len(targets),) scores in [0, 1]; None when a landmark is missing from the map."""
     boxes = scene.boxes
     tb = boxes.take(targets)
     marks, mark_rows = [], []  # the landmarks' boxes and the scene rows they come from (none for a room)
-    by_text = rel.kind not in _CONTACT  # (the words said matter only then: one memo entry per kind otherwise)
     for cats, attrs, names in zip(rel.landmarks, rel.landmark_attrs, rel.landmark_names):
-        rows = np.flatnonzero(_of_kind(scene, cats, attrs, landmark=True, by_text=by_text, names=names if by_text else ""))
+        rows = np.flatnonzero(_landmarks(scene, rel, cats, attrs, names))
         if not len(rows):
             return None
         if rel.landmark_where in ("foot", "head"):
@@ -463,8 +502,9 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
     return 1.0 / (1.0 + np.abs(place - pick))
 
 
-def rank(prompt: Prompt) -> dict:
-    """Top-kappa candidate ids of the target kind by how well they satisfy the relations."""
+def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
+    """Top-kappa candidate ids of the target kind by how well they satisfy the relations
+    (`encoder`: loads the sentence encoder that reads a kind the map lacks, or None)."""
     def abstain(reason: str) -> dict:
         return {"ranked_instance_ids": [], "abstain": reason}
 
@@ -477,13 +517,14 @@ def rank(prompt: Prompt) -> dict:
     if not len(scene.boxes):
         return abstain("no candidates")
     reading = analyse_query(prompt.query)
+    relations = _relations_on_map(scene, sq.relations, encoder)
     if sq.target:
         # the target's appearance wherever the request gives it (before a participle: "the olive
         # lacquered stool"; in a later sentence: "... the teal one, I think"), not only in the relation's clause
         attrs = tuple(dict.fromkeys(sq.attrs + reading.attrs))
         kind = _of_kind(scene, sq.target, attrs)
     else:  # "the one on the left": anything that is not a landmark
-        marks = [c for r in sq.relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]
+        marks = [c for r in relations for c in r.landmarks] + [c for c in (sq.facing, sq.viewer_at) if c]
         kind = ~np.any([_of_kind(scene, c, ()) for c in marks], axis=0) if marks else np.ones(len(scene.boxes), bool)
     targets = np.flatnonzero(kind & scene.is_candidate)
     named_rooms = {r for r, w in reading.rooms.items() if w >= 1.0} or set(reading.rooms)
@@ -500,7 +541,7 @@ def rank(prompt: Prompt) -> dict:
                         for cats in (sq.facing, sq.viewer_at)))
     if sq.target and reading.head_words:
         targets = targets[_not_named_in_part(scene, targets, reading.head_words)]
-        total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, sq.relations)
+        total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, relations)
     else:
         total = np.zeros(len(targets))
     if sq.modifiers and any(c in load_lexicon().generic for c in sq.target):
@@ -513,8 +554,8 @@ def rank(prompt: Prompt) -> dict:
                     default=0.0) for t in targets]
         total += _LOOK * _rank_score(np.array(look))
     placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
-    comparisons = [rel for rel in sq.relations if rel.kind == "extreme" and not rel.negated]
-    for rel in sq.relations:
+    comparisons = [rel for rel in relations if rel.kind == "extreme" and not rel.negated]
+    for rel in relations:
         if rel.kind == "extreme" and not rel.negated:
             continue  # ranked below, among the placed targets
         scores = _relation_scores(rel, scene, targets, view)

@@ -1,0 +1,86 @@
+"""The spatial expert where the request names a landmark the map lacks: a point to be near or far
+from is read as the map label its name stands for (by the sentence encoder, here a fixed table);
+the expert abstains as before when no label is near enough, no encoder is installed, or the thing
+is one to be on or with (a part a caption may name)."""
+
+import numpy as np
+import pytest
+
+from iesm_agent.config import RetrievalConfig
+from iesm_agent.providers.offline import OfflineModel
+from iesm_agent.retrieval import Retriever
+from iesm_agent.understanding.spatial import parse_query
+
+from test_spatial_relations import box, make_store
+
+DIM = 8
+
+
+def unit(*axes):
+    v = np.zeros(DIM, np.float32)
+    for a, w in axes:
+        v[a] = w
+    return v / np.linalg.norm(v)
+
+
+class TableEncoder:
+    """Fixed vectors per text; anything unlisted points where no listed text does."""
+
+    name = "table-encoder"
+
+    def __init__(self, table):
+        self.table = table
+
+    def encode(self, texts):
+        return np.stack([self.table.get(t, unit((DIM - 1, 1.0))) for t in texts])
+
+
+ENC = TableEncoder({
+    "door": unit((0, 1.0)), "stool": unit((1, 1.0)), "plant": unit((2, 1.0)),
+    "doorway": unit((0, 1.0), (3, 0.4)),     # a door, said otherwise
+    "cushion": unit((2, 1.0), (6, 0.5)),     # nearest the plants, but a part of a thing when said with "with"
+})
+
+
+class TableModel(OfflineModel):
+    """The offline model with the table above for its sentence encoder."""
+
+    def encoder(self):
+        return ENC
+
+
+# A 5 m x 4 m workshop: a door on the east wall, a stool near it and one far from it, two plants.
+SHOP = [
+    box(1, "door", (4.98, 1.0, 1.0), (0.05, 0.9, 2.0), room="workshop"),
+    box(2, "stool", (4.1, 1.2, 0.35), (0.4, 0.4, 0.7), room="workshop"),
+    box(3, "stool", (0.8, 3.0, 0.35), (0.4, 0.4, 0.7), room="workshop"),
+    box(4, "plant", (4.4, 3.6, 0.5), (0.4, 0.4, 1.0), room="workshop"),
+    box(5, "plant", (0.5, 0.4, 0.5), (0.4, 0.4, 1.0), room="workshop"),
+]
+
+
+@pytest.fixture(scope="module")
+def shop(tmp_path_factory):
+    return make_store(tmp_path_factory.mktemp("shop"), SHOP)
+
+
+def spatial(store, query, model):
+    r = Retriever(store, provider=model, method="experts:spatial", config=RetrievalConfig(kappa=2))
+    return r.ask(query).experts.get("spatial", [])
+
+
+def test_a_landmark_kind_the_map_lacks_is_the_label_its_name_is_nearest_to(shop):
+    query = "which stool stands nearest to the doorway here"
+    assert parse_query(query).relations[0].landmarks == [("doorway",)]  # a kind of its own in the lexicon
+    assert spatial(shop, query, OfflineModel(use_embeddings=False)) == []  # no encoder: no guess
+    assert spatial(shop, query, TableModel())[0] == 2
+
+
+def test_a_name_near_no_label_still_gives_no_ranking(shop):
+    assert spatial(shop, "the stool that is closest to the harpsichord", TableModel()) == []
+
+
+def test_a_part_said_with_with_is_not_read_as_another_label(shop):
+    query = "a stool with a cushion"
+    assert [r.kind for r in parse_query(query).relations] == ["with"]
+    assert spatial(shop, query, TableModel()) == []  # a caption's part, not a plant beside it
