@@ -27,8 +27,8 @@ def make_store(tmp_path, objects, name="tiny"):
     return MapStore(import_objects(path))
 
 
-def spatial(store, query, kappa=2, **config):
-    r = Retriever(store, provider=OfflineModel(use_embeddings=False), method="experts:spatial",
+def spatial(store, query, kappa=2, provider=None, **config):
+    r = Retriever(store, provider=provider or OfflineModel(use_embeddings=False), method="experts:spatial",
                   config=RetrievalConfig(kappa=kappa, **config))
     return r.ask(query).experts.get("spatial", [])
 

@@ -6,7 +6,7 @@ target kind, colour/material words and relations to landmark categories, then sc
 candidates of the target kind from the geometry fenced in the prompt (`center`, `size`,
 `z_range`, `on`, `under`), with landmarks found by category among the candidates and the
 reference objects; a landmark to be near or far from whose kind the map lacks is read as the map
-label its name misspells or is nearest to ("the doorway" where the map has a "door"). No relation,
+label its name misspells or is nearest to ("the archway" where the map has a "door"). No relation,
 no target, or a landmark the map lacks even so: an empty ranking.
 """
 
@@ -354,7 +354,7 @@ def _map_kinds(scene: _Scene, phrase: str, encoder: Callable[[], Any] | None) ->
 
 def _relations_on_map(scene: _Scene, relations: list[Relation], encoder: Callable[[], Any] | None) -> list[Relation]:
     """`relations`, each landmark kind the scene lacks read as the scene label its name misspells
-    or is nearest to (`_map_kinds`: "the doorway" where the map has a "door"), for a point to be
+    or is nearest to (`_map_kinds`: "the archway" where the map has a "door"), for a point to be
     near or far from; not for a thing to be on or with, which a caption's part may be ("the chair
     with a cup holder"); a landmark no label is sure of stays as said."""
     out = []
