@@ -109,6 +109,15 @@ def test_missing_landmark_gives_no_ranking(room, query):
     assert spatial(room, query) == []
 
 
+def test_the_one_candidate_of_its_kind_leaves_the_relation_nothing_to_tell_apart(room):
+    assert spatial(room, "the desk beside the door") == []  # the room's one desk: no ranking to impose
+    assert spatial(room, "the desk standing by itself") == []
+    assert spatial(room, "the box beside the door") == [8, 7]  # two boxes: the relation tells them apart
+    result = Retriever(room, provider=OfflineModel(use_embeddings=False)).ask("the desk beside the door")
+    assert result.instance_id == 6 and "spatial" in result.abstained
+    assert any("one candidate of the target kind" in note for note in result.notes)
+
+
 @pytest.mark.parametrize("query", ["the red chair", "find the lamp in the bedroom", "the unicorn on the bed"])
 def test_no_relation_or_no_target_gives_no_ranking(room, query):
     assert spatial(room, query) == []
@@ -249,7 +258,6 @@ def test_middle_reads_whose_middle(text, expected):
     ("pick the plant that is on its own", 15),
     ("the plant furthest away from the other two", 15),
     ("the plant closest to the others", 16),         # near both the others
-    ("the desk standing by itself", 6),              # the only desk: ranked, not a landmark missing
 ])
 def test_apart_from_or_amid_the_others_of_its_kind(room, query, best):
     ranked = spatial(room, query)

@@ -504,7 +504,8 @@ def _relation_scores(rel: Relation, scene: _Scene, targets: np.ndarray, view: _V
 
 def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     """Top-kappa candidate ids of the target kind by how well they satisfy the relations
-    (`encoder`: loads the sentence encoder that reads a kind the map lacks, or None)."""
+    (`encoder`: loads the sentence encoder that reads a kind the map lacks, or None); no ranking
+    (an abstention with its reason) when there is nothing for the relations to tell apart."""
     def abstain(reason: str) -> dict:
         return {"ranked_instance_ids": [], "abstain": reason}
 
@@ -519,6 +520,10 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     reading = analyse_query(prompt.query)
     relations = _relations_on_map(scene, sq.relations, encoder)
     if sq.target:
+        if np.count_nonzero(_of_kind(scene, sq.target, ()) & scene.is_candidate) == 1:
+            # where the one candidate of its kind stands tells it from nothing: the kind's reading is the
+            # object expert's to weigh, not a relation's weight to impose (a misread kind would win)
+            return abstain("one candidate of the target kind: nothing for a relation to tell apart")
         # the target's appearance wherever the request gives it (before a participle: "the olive
         # lacquered stool"; in a later sentence: "... the teal one, I think"), not only in the relation's clause
         attrs = tuple(dict.fromkeys(sq.attrs + reading.attrs))
