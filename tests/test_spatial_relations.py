@@ -402,6 +402,18 @@ def test_the_one_after_a_leading_exclusion_has_its_own_attributes():
     assert mug.target == ("cup",) and mug.attrs == (("color", "blue"),)
 
 
+@pytest.mark.parametrize("text, kept, size", [
+    # the parser heads the kept phrase with its material noun ("oak", "brass"), not with "one"
+    ("Not the long black bench - the short oak one near the window.", ("material", "wood"), "short"),
+    ("Never the tiny glass lamp: the big brass one beside the bed.", ("material", "metal"), "large"),
+])
+def test_the_one_after_a_leading_exclusion_takes_nothing_from_the_phrase_ruled_out(text, kept, size):
+    query = parse_query(text)
+    assert kept in query.attrs and ("size", size) in query.attrs
+    assert not {("color", "black"), ("material", "glass")} & set(query.attrs)
+    assert [r.value for r in query.relations if r.kind == "extreme"] == [size]
+
+
 def test_the_one_before_a_later_exclusion_has_its_own_attributes():
     # the kind comes from the phrase ruled out after "not", the looks and the place from the one asked for
     kettle = parse_query("I'd like the small black one near the door, not the big white kettle.")
