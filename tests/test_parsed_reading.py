@@ -106,6 +106,18 @@ def test_the_first_description_names_the_target_not_the_landmark_of_a_later_sent
     assert ("color", "white") in info.attrs
 
 
+@pytest.mark.parametrize("text, target, landmark", [
+    ("a tall grey heater. beside the sink.", "heater", "sink"),
+    ("it is a round mat. below the window, by the shoe rack.", "mat", "window"),
+])
+def test_a_later_sentence_that_opens_with_a_place_says_where_the_target_is(text, target, landmark):
+    structure = parse_request(text)
+    assert structure.request == (0, len(text)) and _target(text) == target
+    info = analyse_query(text)
+    assert info.targets == {target: 1.0} and landmark in info.landmarks
+    assert analyse_query("beside the sink.").targets == {"sink": 0.35}  # alone, it names no other thing
+
+
 def test_a_sentence_about_the_speakers_own_body_or_things_says_why_not_where():
     assert analyse_query("My ankles are swollen. I want the ottoman.").targets == {"ottoman": 1.0}
     assert analyse_query("My shoulders are tense. I'd like one of the footstools.").targets == {"stool": 1.0}

@@ -256,8 +256,9 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     subject = next((c for c in root.children if c.dep_ in ("nsubj", "nsubjpass", "expl", "csubj")), None)
     first = _opening(sent)
     pronoun = first.lower_ in _BACK_POINTING
-    if subject is None and root.pos_ not in ("VERB", "AUX") and any(c.dep_ == "neg" for c in root.children):
-        return "continuation", None  # "Not on the rug.": rules out, says nothing new about the target
+    if subject is None and root.pos_ not in ("VERB", "AUX") and (any(c.dep_ == "neg" for c in root.children) or (
+            sent.start > 0 and root.i == first.i and root.pos_ in ("ADP", "ADV"))):
+        return "continuation", None  # "Not on the rug.", "... Beside the sink.": where the target is (or is not)
     if subject is None and root.pos_ in ("VERB", "AUX") and (noun := _noun_of(root)) is not None:
         return "request", noun  # "trash can by the sink": a compound's last noun read as a verb
     if subject is None and root.i == first.i and _a_thing(root) and not any(
