@@ -721,8 +721,8 @@ class _Reader:
             out.relations = [r for r in out.relations if not (r.kind == "with" and r.landmarks and all(
                 set(mark) & set(out.target) for mark in r.landmarks))]  # "the couch with a sofa bed": a part of it
             one = next((i for i, k in enumerate(self.words) if k is not None and k == self.structure.target), None)
-            if one is not None and self.words[target] is None:  # the kind said only where it is ruled out: the
-                one = next((k for k in range(one, len(toks)) if toks[k] == "one"), one)  # "short oak one" the parse heads "oak"
+            if one is not None and self.words[target] is None:  # its kind named only in the part ruled out: read the
+                one = next((k for k in range(one, len(toks)) if toks[k] == "one"), one)  # kept "one", not "oak" of "the short oak one"
             # "Not the red mug, the blue one", "the blue one, not the red mug": blue
             stand_in = one is not None and self.toks[one] == "one" and (
                 self.words[target] is None or _NEGATIONS.intersection(toks[one:target]))
