@@ -517,13 +517,13 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     scene = _read_scene(prompt)
     if not len(scene.boxes):
         return abstain("no candidates")
+    if sq.target and np.count_nonzero(_of_kind(scene, sq.target, ()) & scene.is_candidate) == 1:
+        # where the one candidate of its kind stands tells it from nothing: the kind's reading is the
+        # object expert's to weigh, not a relation's weight to impose (a misread kind would win)
+        return abstain("one candidate of the target kind: nothing for a relation to tell apart")
     reading = analyse_query(prompt.query)
-    relations = _relations_on_map(scene, sq.relations, encoder)
+    relations = _relations_on_map(scene, sq.relations, encoder)  # (may load the encoder: after the abstentions)
     if sq.target:
-        if np.count_nonzero(_of_kind(scene, sq.target, ()) & scene.is_candidate) == 1:
-            # where the one candidate of its kind stands tells it from nothing: the kind's reading is the
-            # object expert's to weigh, not a relation's weight to impose (a misread kind would win)
-            return abstain("one candidate of the target kind: nothing for a relation to tell apart")
         # the target's appearance wherever the request gives it (before a participle: "the olive
         # lacquered stool"; in a later sentence: "... the teal one, I think"), not only in the relation's clause
         attrs = tuple(dict.fromkeys(sq.attrs + reading.attrs))
