@@ -308,9 +308,25 @@ def test_where_the_viewer_stands_is_not_a_relation(text, expected):
     ("the plant on the left of the daybed while sitting on it", ("sofa",)),
     # said of the target, a place of the target
     ("the little jug sitting on the left of the dresser", ()),
+    ("the kitten sitting on the settee", ()),
+    # a person said to be on a seat is there; a person said to sit, on the seat a side is told from
+    ("the reading light on my right when I'm on the settee", ("sofa",)),
+    ("the speaker to the left of the daybed when you sit", ("sofa",)),
 ])
 def test_a_seat_in_a_condition_or_of_anyone_is_the_viewers(text, seat):
     assert parse_query(text).viewer_at == seat
+
+
+def test_looking_toward_a_thing_faces_it():
+    q = parse_query("the lamp on the left as you look towards the window")
+    assert (q.facing, [r.kind for r in q.relations]) == (("window",), ["left"])
+
+
+def test_what_the_seated_viewer_watches_is_what_they_face():
+    q = parse_query("the reading light on my right when I'm on the settee watching the television")
+    assert (q.viewer_at, q.facing, [r.kind for r in q.relations]) == (("sofa",), ("tv",), ["right"])
+    q = parse_query("the lamp on my left when I sit on the bed watching the telly")
+    assert (q.viewer_at, q.facing) == (("bed",), ("tv",))
 
 
 def test_who_did_something_is_no_landmark():
@@ -624,6 +640,8 @@ def test_the_viewer_stands_in_the_targets_own_room_not_every_room_of_its_type(tm
     ("seen from the sofa, the right-hand lamp", 5),       # the viewer sits on the sofa, looking into the room
     ("Sitting on the couch, which lamp is to my left?", 4),
     ("the right-hand lamp as you look from the foot of the sofa", 4),  # at its foot: facing the sofa
+    ("the lamp on my left when I'm on the sofa watching the television", 4),
+    ("the lamp to the right of the sofa as you sit", 5),
 ])
 def test_the_viewer_can_sit_or_stand_at_a_landmark(tmp_path, query, best):
     lounge = [box(1, "sofa", (2.0, 0.5, 0.4), (2.0, 0.9, 0.8), room="living room"),
@@ -899,6 +917,21 @@ def test_a_room_named_by_another_word_for_its_qualifier(tmp_path, method, asked,
     assert r.ask(f"take me to the wardrobe in the {asked} bedroom").instance_id == 2
 
 
+@pytest.mark.parametrize("asked, meant", [("primary", "master"), ("main", "master"), ("spare", "guest")])
+def test_the_spatial_expert_reads_a_room_named_by_another_word_for_its_qualifier(tmp_path, asked, meant):
+    # a radio on a nightstand in each bedroom: only the room tells them apart (the room meant holds the
+    # earlier ids, so a tie would not pick it)
+    other = "guest" if meant == "master" else "master"
+    objects = [box(1, "nightstand", (6.0, 3.0, 0.3), (0.5, 0.4, 0.6), room=f"{other} bedroom"),
+               box(2, "radio", (6.0, 3.0, 0.8), (0.3, 0.3, 0.4), room=f"{other} bedroom"),
+               box(3, "nightstand", (6.0, 1.0, 0.3), (0.5, 0.4, 0.6), room=f"{other} bedroom")]
+    objects = [box(4, "nightstand", (0.5, 3.0, 0.3), (0.5, 0.4, 0.6), room=f"{meant} bedroom"),
+               box(5, "radio", (0.5, 3.0, 0.8), (0.3, 0.3, 0.4), room=f"{meant} bedroom"),
+               box(6, "nightstand", (0.5, 1.0, 0.3), (0.5, 0.4, 0.6), room=f"{meant} bedroom")] + objects
+    store = make_store(tmp_path, objects)
+    assert spatial(store, f"the nightstand holding the radio in the {asked} bedroom")[0] == 4
+
+
 def test_a_with_phrase_naming_the_targets_own_kind_is_a_part_of_it_not_a_landmark():
     # a pane is a window's, a sofa bed the couch's own part: no second object to be beside
     assert parse_query("the kitchen window with a cracked pane").relations == []
@@ -923,7 +956,13 @@ def test_at_the_foot_or_head_of_a_thing_is_near_that_end_of_it():
         return [(r.kind, r.landmarks, r.landmark_where) for r in parse_query(text).relations]
     assert read("the slippers at the foot of the bed") == [("near", [("bed",)], "foot")]
     assert read("the bolster at the head of the sofa") == [("near", [("sofa",)], "head")]
-    assert read("the vice at one end of the workbench") == []  # another part of it says no place
+    # "toward" a thing or an end of it is near it
+    assert read("the slippers toward the head of the bed") == [("near", [("bed",)], "head")]
+    # the end said by the word before "end", and the thing's own description between
+    assert read("the slippers by the bottom end of the narrow bed") == [("near", [("bed",)], "foot")]
+    assert read("the bolster at the top end of the old sofa") == [("near", [("sofa",)], "head")]
+    assert read("the vice at one end of the workbench") == []  # which end, nothing says
+    assert read("the vice at the far end of the workbench") == []
 
 
 # A kitchen (x 0-4 m) with a sink on its west wall and three stools along its counter; through the

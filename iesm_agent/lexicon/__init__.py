@@ -279,6 +279,11 @@ class Lexicon:
             self._purpose_cache[(kind, least)] = hit
         return hit
 
+    def room_name_words(self, name: str) -> frozenset[str]:
+        """The words a room is named with, lemmatised, qualifiers of one meaning as one word
+        ("the Main Bedroom", "master bedroom": {master, bedroom})."""
+        return frozenset(self.room_qualifiers.get(w, w) for w in (self.lemma(t) for t in self.tokens(name) if t.isalpha()))
+
     def room_sim(self, a: str, b: str) -> float:
         if a == b:
             return 1.0

@@ -43,6 +43,8 @@ _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
+#: words before "end" that say which end of a thing's length it is ("the bottom end of the bed": its foot)
+_WHICH_END = {"foot": "foot", "feet": "foot", "bottom": "foot", "head": "head", "top": "head"}
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
 #: forms of "sit": a place it takes is the viewer's when said of the speaker or the listener, or
@@ -58,6 +60,9 @@ _BEING = AUXILIARIES | {"s", "placed", "located"}
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
+#: forms of "be" that place a person ("when I'm on the sofa"), and of "watch" that say what one faces
+_BE = frozenset({"am", "'m", "m", "is", "'s", "are", "'re", "re", "was", "were", "be"})
+_WATCHING = frozenset({"watch", "watches", "watching", "watched"})
 #: verbs of seeing after which "from" says where the viewer is
 _SEEING = frozenset({"seen", "viewed", "looked", "watching"}) | _LOOKING
 #: attribute kinds read before a target or landmark noun ("the red chair", "the small lamp")
@@ -360,8 +365,9 @@ class _Reader:
             end, kinds = self.cat_at[at].end, self.kinds[at]
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
-            if at >= 2 and self.toks[at - 1] == "of" and self.toks[at - 2] in ("foot", "head"):
-                rel.landmark_where = self.toks[at - 2]  # "near the foot of the cot": that end of its length
+            of = self.structure.words[noun].head if (noun := self.noun_of(self.words[at])) is not None else None
+            if of is not None and self.lower(of) == "of":  # "near the foot of the (narrow) cot": that end of it
+                rel.landmark_where = self.which_end(self.structure.words[of].head)
         attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
         return self.add_landmark(rel, kinds, attrs, end, "" if at == one else " ".join(self.toks[at:end]))
 
@@ -430,7 +436,43 @@ class _Reader:
                 i = self.cue(i)
         for rel in (out.relations[k] for k in negated if k < len(out.relations)):
             rel.negated = True
+        self.seated_viewer()
         return self.target()
+
+    def seated_viewer(self) -> None:
+        """Where a person said to sit (or to be) is, when no cue placed the viewer: the seat the sitting or
+        being takes ("when I'm on the sofa"), no longer a place of the target; else the seat a side of the
+        target is told from ("the lamp left of the sofa when you sit"). And what the viewer watches, when
+        nothing is faced ("as you sit watching TV")."""
+        st, out, seats = self.structure, self.out, self.lex.generic.get("seat", {})
+        people = _ANYONE | {"i", "you", "u", "ur", "we"}
+
+        def placed(k: int) -> bool:  # a person sits or is there: not a thing ("the monitor sitting on the desk")
+            subjects = st.children(k, "nsubj", "nsubjpass")
+            if subjects:
+                return all(self.lower(n) in people for n in subjects) and self.lower(k) in _SITTING | _BE
+            said_of = st.words[k].head if st.words[k].dep in ("acl", "amod", "relcl") else None  # ("seated view")
+            return self.lower(k) in _SITTING and (said_of is None or self.lower(said_of) in people | {"view"})
+
+        def seat_of(rel: Relation) -> int | None:  # the verb the relation's landmark phrase hangs on
+            noun = self.noun_of(self.words[self.taken[rel][0]]) if self.taken.get(rel) else None
+            prep = st.words[noun].head if noun is not None and st.words[noun].dep == "pobj" else None
+            return st.words[prep].head if prep is not None else None
+
+        held = None if out.viewer_at else next((r for r in out.relations if r.kind in ("on", "in", "near")
+                                                 and len(r.landmarks) == 1 and any(seats.get(c, 0.0) >= 0.5 for c in r.landmarks[0])
+                                                 and (k := seat_of(r)) is not None and placed(k)), None)
+        if held is not None:
+            out.viewer_at = held.landmarks[0]
+            out.relations.remove(held)
+        elif not out.viewer_at and any(self.lower(k) in _SITTING and placed(k) for k in range(len(st.words))):
+            told = next((r for r in out.relations if r.kind in ("left", "right") and len(r.landmarks) == 1
+                         and any(seats.get(c, 0.0) >= 0.5 for c in r.landmarks[0])), None)
+            out.viewer_at = told.landmarks[0] if told is not None else ()
+        if out.viewer_at and not out.facing:  # ("watching TV" is a use phrase: its noun read alone)
+            watched = {o for k, w in enumerate(st.words) if w.text.lower() in _WATCHING for o in st.children(k, "dobj")}
+            out.facing = next((tuple(span.values("cat")) for i, k in enumerate(self.words) if k in watched
+                               for span in self.lex.scan(self.lemmas[i:i + 1]) if span.has("cat")), ())
 
     def cue(self, i: int) -> int:
         """Read the relation cue at `i` (if any); the position after it."""
@@ -643,13 +685,23 @@ class _Reader:
             self.pending_ordinal.value = "landmark"
         return i
 
+    def which_end(self, k: int | None) -> str:
+        """The end of a thing's length the parsed noun `k` names: "foot" or "head" ("the foot of", and "the
+        foot end", "the bottom end" of it: its foot; "the top end": its head); "" for none (nor for an end
+        told by no such word: "the end of the table", "the far end")."""
+        noun = self.lower(k)
+        if noun in ("foot", "head"):
+            return noun
+        said = {self.lower(c) for c in self.structure.children(k, "amod", "compound")}
+        return _WHICH_END.get(said.pop(), "") if noun == "end" and len(said) == 1 else ""
+
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a
-        category itself, or the foot or head of one ("at the head of the cot": that end, `landmark`), not
-        another part of one ("at one end of the workbench") or a place looked at."""
+        category itself, or the foot or head of one ("at the head of the cot", "at the bottom end of the cot":
+        that end, `landmark`), not another part of one ("at one end of the workbench") or a place looked at."""
         st = self.structure
         return at is not None and self.lower(st.words[at].head) not in _LOOKING and any(
-            self.span_of.get(k) is not None or self.lower(k) in ("foot", "head") and any(
+            self.span_of.get(k) is not None or self.which_end(k) and any(
                 self.span_of.get(g) is not None for g in st.children(st.of_phrase(k), "pobj"))
             for k in st.children(at, "pobj"))
 

@@ -468,11 +468,10 @@ def _room_fit(lex, q: QueryInfo, room: str | None, room_words: frozenset[str], m
     fit = memo.get(key)
     if fit is None:
         fit = max((w * lex.room_sim(qr, room) for qr, w in q.rooms.items() if room is not None), default=0.0)
-        same = lex.room_qualifiers  # qualifiers of one meaning compare as one word ("primary": master)
         asked = memo.get(("asked room",))
         if asked is None:  # the words the request names its room with, once per query
-            asked = memo[("asked room",)] = frozenset(same.get(w, w) for w in (
-                lex.lemma(t) for t in lex.tokens(q.room_phrase or "") if t.isalpha()))
+            asked = memo[("asked room",)] = lex.room_name_words(q.room_phrase or "")
+        same = lex.room_qualifiers  # qualifiers of one meaning compare as one word ("primary": master)
         if fit and asked and not asked <= {same.get(w, w) for w in room_words}:
             fit *= _OTHER_NAMED_ROOM  # another qualifier's room of the type (the guest one, the master asked)
         memo[key] = fit
