@@ -53,6 +53,7 @@ _SITTING = frozenset({"sit", "sits", "sitting", "sat", "seated"})
 #: anyone at all, whose place is a viewpoint ("for somebody sat on it"), and the words
 #: that make a clause of sitting or standing a condition of the view ("when seated on the settee")
 _ANYONE = frozenset({"someone", "somebody", "anyone", "anybody", "person"})
+_PEOPLE = _ANYONE | {"i", "you", "u", "ur", "we"}  # whoever may sit or look: anyone, the speaker, the listener
 _WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
 _BEING = AUXILIARIES | {"s", "placed", "located"}
@@ -445,29 +446,29 @@ class _Reader:
         target is told from ("the lamp left of the sofa when you sit"). And what the viewer watches, when
         nothing is faced ("as you sit watching TV")."""
         st, out, seats = self.structure, self.out, self.lex.generic.get("seat", {})
-        people = _ANYONE | {"i", "you", "u", "ur", "we"}
 
         def placed(k: int) -> bool:  # a person sits or is there: not a thing ("the monitor sitting on the desk")
             subjects = st.children(k, "nsubj", "nsubjpass")
             if subjects:
-                return all(self.lower(n) in people for n in subjects) and self.lower(k) in _SITTING | _BE
+                return all(self.lower(n) in _PEOPLE for n in subjects) and self.lower(k) in _SITTING | _BE
             said_of = st.words[k].head if st.words[k].dep in ("acl", "amod", "relcl") else None  # ("seated view")
-            return self.lower(k) in _SITTING and (said_of is None or self.lower(said_of) in people | {"view"})
+            return self.lower(k) in _SITTING and (said_of is None or self.lower(said_of) in _PEOPLE | {"view"})
 
-        def seat_of(rel: Relation) -> int | None:  # the verb the relation's landmark phrase hangs on
+        def placed_by(rel: Relation) -> int | None:  # the verb the relation's landmark phrase hangs on
             noun = self.noun_of(self.words[self.taken[rel][0]]) if self.taken.get(rel) else None
             prep = st.words[noun].head if noun is not None and st.words[noun].dep == "pobj" else None
             return st.words[prep].head if prep is not None else None
 
-        held = None if out.viewer_at else next((r for r in out.relations if r.kind in ("on", "in", "near")
-                                                 and len(r.landmarks) == 1 and any(seats.get(c, 0.0) >= 0.5 for c in r.landmarks[0])
-                                                 and (k := seat_of(r)) is not None and placed(k)), None)
+        def to_a_seat(rel: Relation) -> bool:  # its one landmark is a thing to sit on (a bed too)
+            return len(rel.landmarks) == 1 and any(seats.get(c, 0.0) >= 0.5 for c in rel.landmarks[0])
+
+        held = None if out.viewer_at else next((r for r in out.relations if r.kind in ("on", "in", "near") and to_a_seat(r)
+                                                 and (k := placed_by(r)) is not None and placed(k)), None)
         if held is not None:
             out.viewer_at = held.landmarks[0]
             out.relations.remove(held)
         elif not out.viewer_at and any(self.lower(k) in _SITTING and placed(k) for k in range(len(st.words))):
-            told = next((r for r in out.relations if r.kind in ("left", "right") and len(r.landmarks) == 1
-                         and any(seats.get(c, 0.0) >= 0.5 for c in r.landmarks[0])), None)
+            told = next((r for r in out.relations if r.kind in ("left", "right") and to_a_seat(r)), None)
             out.viewer_at = told.landmarks[0] if told is not None else ()
         if out.viewer_at and not out.facing:  # ("watching TV" is a use phrase: its noun read alone)
             watched = {o for k, w in enumerate(st.words) if w.text.lower() in _WATCHING for o in st.children(k, "dobj")}
