@@ -43,7 +43,7 @@ _NEGATIONS = {"not", "isn't", "aren't", "isnt", "never", "nowhere"}
 _LANDMARK_KINDS = {"on", "under", "below", "above", "near", "between", "with"}
 #: forms of "stand": a place it takes is the viewer's, said of no one or of the listener
 _STANDING = frozenset({"stand", "stands", "standing", "stood"})
-#: words before "end" that say which end of a thing's length it is ("the bottom end of the bed": its foot)
+#: words before "end" that say which end of a thing's length it is ("the bottom end of the cot": its foot)
 _WHICH_END = {"foot": "foot", "feet": "foot", "bottom": "foot", "head": "head", "top": "head"}
 #: parts of a thing that a viewer there faces ("at the foot of the cot", "in front of the benches")
 _FACING_PARTS = frozenset({"foot", "end", "bottom", "front"})
@@ -61,7 +61,7 @@ _BEING = AUXILIARIES | {"s", "placed", "located"}
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
 _LOOKING = frozenset({"look", "looking", "looks", "stare", "staring", "point", "pointing", "glance", "facing"})
-#: forms of "be" that place a person ("when I'm on the sofa"), and of "watch" that say what one faces
+#: forms of "be" that place a person ("while I'm on the settee"), and of "watch" that say what one faces
 _BE = frozenset({"am", "'m", "m", "is", "'s", "are", "'re", "re", "was", "were", "be"})
 _WATCHING = frozenset({"watch", "watches", "watching", "watched"})
 #: verbs of seeing after which "from" says where the viewer is
@@ -442,17 +442,17 @@ class _Reader:
 
     def seated_viewer(self) -> None:
         """Where a person said to sit (or to be) is, when no cue placed the viewer: the seat the sitting or
-        being takes ("when I'm on the sofa"), no longer a place of the target; else the seat a side of the
-        target is told from ("the lamp left of the sofa when you sit"). And what the viewer watches, when
-        nothing is faced ("as you sit watching TV")."""
+        being takes ("while I'm on the settee"), no longer a place of the target; else the seat a side of the
+        target is told from ("the speaker left of the daybed when you sit"). And what the viewer watches, when
+        nothing is faced ("as I sit watching the television")."""
         st, out, seats = self.structure, self.out, self.lex.generic.get("seat", {})
 
-        def placed(k: int) -> bool:  # a person sits or is there: not a thing ("the monitor sitting on the desk")
+        def placed(k: int) -> bool:  # a person sits or is there: not a thing ("the pot sitting on the desk")
             subjects = st.children(k, "nsubj", "nsubjpass")
             if subjects:
                 return all(self.lower(n) in _PEOPLE for n in subjects) and self.lower(k) in _SITTING | _BE
-            said_of = st.words[k].head if st.words[k].dep in ("acl", "amod", "relcl") else None  # ("seated view")
-            return self.lower(k) in _SITTING and (said_of is None or self.lower(said_of) in _PEOPLE | {"view"})
+            said_of = st.words[k].head if st.words[k].dep in ("acl", "amod", "relcl") else None  # ("anybody seated")
+            return self.lower(k) in _SITTING and (said_of is None or self.lower(said_of) in _PEOPLE)
 
         def placed_by(rel: Relation) -> int | None:  # the verb the relation's landmark phrase hangs on
             noun = self.noun_of(self.words[self.taken[rel][0]]) if self.taken.get(rel) else None
@@ -470,7 +470,7 @@ class _Reader:
         elif not out.viewer_at and any(self.lower(k) in _SITTING and placed(k) for k in range(len(st.words))):
             told = next((r for r in out.relations if r.kind in ("left", "right") and to_a_seat(r)), None)
             out.viewer_at = told.landmarks[0] if told is not None else ()
-        if out.viewer_at and not out.facing:  # ("watching TV" is a use phrase: its noun read alone)
+        if out.viewer_at and not out.facing:  # (the lexicon reads watching a screen as a use: its noun read alone)
             watched = {o for k, w in enumerate(st.words) if w.text.lower() in _WATCHING for o in st.children(k, "dobj")}
             out.facing = next((tuple(span.values("cat")) for i, k in enumerate(self.words) if k in watched
                                for span in self.lex.scan(self.lemmas[i:i + 1]) if span.has("cat")), ())
@@ -689,12 +689,12 @@ class _Reader:
     def which_end(self, k: int | None) -> str:
         """The end of a thing's length the parsed noun `k` names: "foot" or "head" ("the foot of", and "the
         foot end", "the bottom end" of it: its foot; "the top end": its head); "" for none (nor for an end
-        told by no such word: "the end of the table", "the far end")."""
+        told by no such word: "the end of the bench", "the near end")."""
         noun = self.lower(k)
         if noun in ("foot", "head"):
             return noun
-        said = {self.lower(c) for c in self.structure.children(k, "amod", "compound")}
-        return _WHICH_END.get(said.pop(), "") if noun == "end" and len(said) == 1 else ""
+        said = [self.lower(c) for c in self.structure.children(k, "amod", "compound")]
+        return _WHICH_END.get(said[0], "") if noun == "end" and len(said) == 1 else ""
 
     def beside(self, at: int | None) -> bool:
         """True when "at" places the target by a thing ("the chair at the desk"): its object is a

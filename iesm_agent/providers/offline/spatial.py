@@ -536,15 +536,17 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
     in_room = np.array([scene.rooms[t] in named_rooms for t in targets], bool)
     if in_room.any():  # "... in the attic", else "the kitchen chair ...": that room's instances
         targets = targets[in_room]
-    said, lex = (reading.room_phrase or "").lower(), load_lexicon()
-    # the room the map calls so, not another of its type (a studio is an office too); else one its name's
-    # words include, as the room expert reads it ("the main bedroom": the master bedroom, not the guest one)
-    for as_named in (np.array([(scene.room_names[t] or "").lower() == said for t in targets], bool),
-                     np.array([lex.room_name_words(said) <= lex.room_name_words(scene.room_names[t] or "")
-                               for t in targets], bool)):
-        if said and as_named.any():
+    said = (reading.room_phrase or "").lower()
+    if said:  # the room the map calls so, not another of its type (a studio is an office too); else the rooms
+        # whose names hold the words said, as the room expert reads them ("the principal bedroom": the master one)
+        names = [(scene.room_names[t] or "").lower() for t in targets]
+        as_named = np.array([name == said for name in names], bool)
+        if not as_named.any():
+            lex = load_lexicon()
+            asked, held = lex.room_name_words(said), {name: lex.room_name_words(name) for name in set(names)}
+            as_named = np.array([asked <= held[name] for name in names], bool)
+        if as_named.any():
             targets = targets[as_named]
-            break
     if not len(targets):
         return abstain("no candidate of the target kind")
     view = _Viewpoint(*(np.flatnonzero(_of_kind(scene, cats, ())) if cats else np.zeros(0, np.int64)
