@@ -71,7 +71,9 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
     together (two experts outvote a third only with weights above 0.88 of its own).
     Without a category, the function asked for decides (abstract expert 4) when the request says
     what it wants to do; a noun modifying the target that only hints at a use ("the book with
-    the gold cover") is some evidence (2)."""
+    the gold cover") is some evidence (2). A category no candidate carries, named in a request
+    that says what to do, is most often what the use is done to, not where to go: the use then
+    weighs 3 against the name's 2."""
     attrs = " ".join(v for _, v in q.attrs)
     loose = q.extra - _unknown_words(q)
     n_desc = len(q.attrs) + 0.5 * min(2, len(loose))
@@ -90,8 +92,8 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
             return 3, attrs
         return min(3 if q.afford else 4, round(1.5 + 1.5 * n_desc)), attrs
     top = [c for c, w in sorted(q.afford.items(), key=lambda kv: -kv[1]) if w >= 1.0][:4]
-    if q.named:
-        score = 1 if q.afford else 0
+    if q.named:  # a use said of a thing the map does not have ("reheat my soup") is the better evidence
+        score = (3 if q.purpose and not on_map else 1) if q.afford else 0
     elif q.afford:
         score = 4 if q.purpose else 2
     else:
