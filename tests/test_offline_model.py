@@ -394,11 +394,11 @@ def test_a_colour_no_candidate_has_ranks_them_by_how_near_theirs_looks(model, li
 
 
 def test_a_use_said_of_a_thing_the_map_lacks_outweighs_its_name(model, lib):
-    # no candidate is bread: what the speaker wants done to it (thawing) is the evidence of where to go
-    kitchen = [{"id": 1, "label": "microwave", "room": "kitchen", "caption": "A white microwave."},
+    # no candidate is bread: what the speaker wants done to it (toasting) is the evidence of where to go
+    kitchen = [{"id": 1, "label": "toaster", "room": "kitchen", "caption": "A red two-slot toaster."},
                {"id": 2, "label": "bowl", "room": "kitchen", "caption": "A blue ceramic bowl."},
                {"id": 3, "label": "bread", "room": "kitchen", "caption": "A sliced loaf."}]
-    lacking = _gate(model, lib, "I'd like to defrost the bread.", kitchen[:2])
+    lacking = _gate(model, lib, "I'd like to toast some bread.", kitchen[:2])
     assert lacking["abs"] > lacking["obj"]
-    having = _gate(model, lib, "I'd like to defrost the bread.", kitchen)  # the name on the map: it decides
+    having = _gate(model, lib, "I'd like to toast some bread.", kitchen)  # the name on the map: it decides
     assert having["obj"] > having["abs"]
