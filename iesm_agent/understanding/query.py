@@ -92,8 +92,7 @@ class QueryInfo:
 
     def __post_init__(self) -> None:  # freezes the containers too
         for f in fields(self):
-            value = getattr(self, f.name)
-            if isinstance(value, dict):
+            if isinstance(value := getattr(self, f.name), dict):
                 object.__setattr__(self, f.name, MappingProxyType(dict(value)))
 
     named = property(_named)
