@@ -42,10 +42,8 @@ def ground_query(info: QueryInfo, rooms: Sequence[str], labels: Sequence[str], e
         else:
             label = _nearest(encoder, info.unknown_target, labels)
         targets.update({c: 1.0 for c in label_kinds(label)})
-    if info.unknown_room:
-        room = map_word(info.unknown_room, rooms, encoder)
-        if room is not None:
-            found_rooms[room] = 1.0
+    if info.unknown_room and (room := map_word(info.unknown_room, rooms, encoder)) is not None:
+        found_rooms[room] = 1.0
     named, placed = (targets, overlap) != (info.targets, info.overlap), found_rooms != info.rooms
     grounded = info if not (named or placed) else dataclasses.replace(
         info, targets=targets, rooms=found_rooms, overlap=overlap,

@@ -120,9 +120,7 @@ def candidate_from_line(line: str) -> tuple[int, Record] | None:
         data = json.loads(line)
     except ValueError:
         return None
-    if not isinstance(data, dict):
-        return None
-    ident = data.get("id")
+    ident = data.get("id") if isinstance(data, dict) else None
     if isinstance(ident, str) and ident.strip().lstrip("-").isdigit():
         ident = int(ident)
     if not isinstance(ident, int) or isinstance(ident, bool):

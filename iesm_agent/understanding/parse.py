@@ -296,8 +296,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
             # where a thing of the speaker's is ("my glasses are on the bookcase", "I left my umbrella by the stairs")
             found = _place_of([root])
         return ("request" if question else "personal"), found
-    dets = [t for t in sent if t.dep_ == "det" and t.lower_ in ("this", "that") and t.head.pos_ in NOUNS]
-    shown = next((t.head.i for t in dets if t.lower_ == "this" and t.head != subject), None)
+    shown = next((t.head.i for t in sent if t.dep_ == "det" and t.lower_ == "this" and t.head.pos_ in NOUNS
+                  and t.head != subject), None)
     if shown is not None and not question and subject is not None \
             and (subject.dep_ in ("expl", "csubj") or subject.pos_ in NOUNS):
         return "description", shown  # "there is a rug under this table": the demonstrative names the target

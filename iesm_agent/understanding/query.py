@@ -92,8 +92,7 @@ class QueryInfo:
 
     def __post_init__(self) -> None:  # freezes the containers too
         for f in fields(self):
-            value = getattr(self, f.name)
-            if isinstance(value, dict):
+            if isinstance(value := getattr(self, f.name), dict):
                 object.__setattr__(self, f.name, MappingProxyType(dict(value)))
 
     named = property(_named)
@@ -432,11 +431,12 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
     words = {*info.extra, *landmark_words, *(w for slot in info.slots for w in slot.base.split())}
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
     if not _named(info) and not info.afford:
-        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end, whole=False)
+        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end)
     place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
     if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
         stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
-        info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at, whole=True)
+        if (covered | used).isdisjoint(range(place + 1, stop_at)):  # no word of the place phrase is a lexicon phrase
+            info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at)
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
@@ -450,10 +450,7 @@ def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:
 
 
 def _unknown_run(surface: list[_Token], lemmas: list[str], known: set[int], stop: frozenset[str],
-                 start: int, end: int, *, whole: bool) -> str | None:
-    """The content words of `start:end` that no lexicon phrase covers, as written; None when
-    there are none, or (`whole`) when any word of the span is a lexicon phrase."""
-    if whole and any(i in known for i in range(start, end)):
-        return None
+                 start: int, end: int) -> str | None:
+    """The content words of `start:end` that no lexicon phrase covers, as written; None when there are none."""
     return " ".join(surface[i] for i in range(start, end)
                     if i not in known and lemmas[i] not in stop and len(lemmas[i]) > 2 and lemmas[i].isalpha()) or None
