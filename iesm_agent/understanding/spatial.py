@@ -217,8 +217,7 @@ class _Reader:
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
         st = self.structure
-        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[k].head != k \
-                and st.words[st.words[k].head].pos in NOUNS:
+        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[st.words[k].head].pos in NOUNS:
             k = st.words[k].head
         return k
 
@@ -312,13 +311,6 @@ class _Reader:
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
         return owner is not None and (self.span_of.get(owner) == self.target_at or self.points_back(owner))
 
-    def whole_of(self, at: int) -> int | None:
-        """Start of the category span of the thing that the span at `at` names a part of, through the
-        part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"), free and not the target; else None."""
-        st, head = self.structure, self.words[self.cat_at[at].end - 1]
-        whole = next((j for j in map(self.span_of.get, st.children(st.of_phrase(head), "pobj")) if j is not None), None)
-        return None if whole is None or whole in self.used or whole == self.target_at else whole
-
     def antecedent(self, objects: set[int]) -> int | None:
         """Start of the category span that a pronoun the cue takes stands for when the cue places the
         target itself ("There's a bookcase in the hall. The vase on top of [it]"): the last one named
@@ -339,14 +331,14 @@ class _Reader:
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
-        objects = self.cue_objects()  # with the apposition the parser hangs "one" on ("the metal [one]"), or
-        objects |= set(self.structure.children(objects, "appos"))  # the number ("next to blue [one]", not "one chair")
-        bare = {k for k in objects if k in self.attr_words or self.structure.words[k].pos != "NOUN"}
-        objects |= set(self.structure.children(bare, "nummod"))
+        st, objects = self.structure, self.cue_objects()
+        objects |= set(st.children(objects, "appos"))  # the apposition the parser hangs "one" on ("the metal [one]"),
+        bare = {k for k in objects if k in self.attr_words or st.words[k].pos != "NOUN"}
+        objects |= set(st.children(bare, "nummod"))  # or the number ("next to blue [one]", not "one chair")
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
-                and self.structure.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
+                and st.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
             at, end, kinds = one, one + 1, self.kinds[self.target_at]
         elif self.place_for_use(rel, pos):
             return True
@@ -356,9 +348,11 @@ class _Reader:
             if at is None:
                 return self.room_landmark(rel, pos)
             self.used.add(at)
-            rel.negated = rel.negated or self.words[at] in self.structure.lacking  # "with no lamp on it"
-            whole = self.whole_of(at)
-            if whole is not None:  # "on the top shelf of the bookcase": in the bookcase, which holds its shelves
+            rel.negated = rel.negated or self.words[at] in st.lacking  # "with no lamp on it"
+            # a part named with a free whole, not the target ("on the top shelf [of the bookcase]"): in the whole
+            of = st.of_phrase(self.words[self.cat_at[at].end - 1])
+            whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
+            if whole is not None and whole not in self.used and whole != self.target_at:
                 self.parts.add(at)
                 at, rel.kind = whole, "in" if rel.kind == "on" else rel.kind
                 self.used.add(at)
@@ -366,9 +360,9 @@ class _Reader:
             end, kinds = self.cat_at[at].end, self.kinds[at]
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
-            of = self.structure.words[noun].head if (noun := self.noun_of(self.words[at])) is not None else None
-            if of is not None and self.lower(of) == "of":  # "near the foot of the (narrow) cot": that end of it
-                rel.landmark_where = self.which_end(self.structure.words[of].head)
+            of = st.words[noun].head if (noun := self.noun_of(self.words[at])) is not None else None
+            if self.lower(of) == "of":  # "near the foot of the (narrow) cot": that end of it
+                rel.landmark_where = self.which_end(st.words[of].head)
         attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
         return self.add_landmark(rel, kinds, attrs, end, "" if at == one else " ".join(self.toks[at:end]))
 
@@ -741,10 +735,6 @@ class _Reader:
         self.out.relations.append(rel)
         return i
 
-    def speakers(self, j: int) -> bool:
-        """True when the span at `j` names a thing of the speaker's ("my tablet", "our old rug")."""
-        return any(self.lower(p) in _SPEAKERS for p in self.structure.children(self.words[j], "poss"))
-
     def target(self) -> SpatialQuery:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
@@ -752,7 +742,8 @@ class _Reader:
         target = self.target_at if self.target_at is not None else next(
             (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
              and self.words[j] not in self.structure.lacking  # nor what the request rules out
-             and not self.speakers(j)  # nor a thing of the speaker's ("my tablet is flat")
+             # nor a thing of the speaker's ("my tablet is flat", "our old rug")
+             and not any(self.lower(p) in _SPEAKERS for p in self.structure.children(self.words[j], "poss"))
              and not set(self.kinds[j]) <= info.excluded_targets), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
