@@ -286,9 +286,8 @@ class _Reader:
     def on_a_plan(self, i: int) -> bool:
         """True when the height word at `i` comes before a side ("the top left corner", "the upper
         right one"): a place on a plan seen from above, not a height."""
-        after = self.toks[i + 1] if i + 1 < len(self.toks) else ""
         return _EXTREMES.get(self.toks[i], _HEIGHT_NOUNS.get(self.toks[i])) in ("high", "low") \
-            and _CUES.get((after,)) in _SIDES
+            and _CUES.get(tuple(self.toks[i + 1:i + 2])) in _SIDES
 
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height (not on a plan): a modifier
@@ -550,8 +549,6 @@ class _Reader:
             return i  # "the south-east corner of the workbench": a side of it, which the compass word says
         if kind in ("corner", "middle") and nxt == "of":
             return self.place_of(i, kind)
-        if kind == "middle" and self.says_which_landmark(kind):
-            return i
         if kind == "right" and nxt != "of" and i < len(toks) and self.cue_word is not None and (
                 self.word(i).pos == "ADP" and cue.dep != "pobj"
                 or cue.dep == "advmod" and self.word(i).dep != "pobj" and cue.head == self.words[i]):
@@ -560,8 +557,9 @@ class _Reader:
                 and toks[before] in ("in", "at"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
             return i
-        if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind
-            out.relations.append(Relation(kind, value="group"))
+        if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind, unless it is
+            if not self.says_which_landmark(kind):  # the landmark's ("by the middle window")
+                out.relations.append(Relation(kind, value="group"))
             return i
         return self.landmark_relation(i, kind, nxt)
 
