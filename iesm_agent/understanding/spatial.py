@@ -390,10 +390,9 @@ class _Reader:
     def room_landmark(self, rel: Relation, pos: int) -> bool:
         """A room said right after a word of nearness ("the stool closest to the garage") as the
         landmark of a relation of nearness: no category, the room's objects (`landmark_attrs`)."""
-        start = next((j for j in self.near_rooms if pos <= j <= pos + 1), None)
-        if start is None or rel.kind not in ("near", "closest", "farthest"):
-            return False
-        return self.add_landmark(rel, (), self.room_at[self.near_rooms[start]], self.near_rooms[start])
+        end = next((e for s, e in self.near_rooms.items() if pos <= s <= pos + 1), None)  # where the room's name ends
+        return end is not None and rel.kind in ("near", "closest", "farthest") \
+            and self.add_landmark(rel, (), self.room_at[end], end)
 
     def named_side(self, i: int) -> int:
         """The position after the category or room phrase at `i`; a phrase other than the target's that
