@@ -217,8 +217,7 @@ class _Reader:
     def noun_of(self, k: int | None) -> int | None:
         """The noun the parsed word `k` modifies, through compounds ("the left-hand [side]"), or `k`."""
         st = self.structure
-        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[k].head != k \
-                and st.words[st.words[k].head].pos in NOUNS:
+        while k is not None and st.words[k].dep in ("amod", "compound") and st.words[st.words[k].head].pos in NOUNS:
             k = st.words[k].head
         return k
 
@@ -287,9 +286,8 @@ class _Reader:
     def on_a_plan(self, i: int) -> bool:
         """True when the height word at `i` comes before a side ("the top left corner", "the upper
         right one"): a place on a plan seen from above, not a height."""
-        after = self.toks[i + 1] if i + 1 < len(self.toks) else ""
         return _EXTREMES.get(self.toks[i], _HEIGHT_NOUNS.get(self.toks[i])) in ("high", "low") \
-            and _CUES.get((after,)) in _SIDES
+            and _CUES.get(tuple(self.toks[i + 1:i + 2])) in _SIDES
 
     def height_word(self, i: int) -> bool:
         """True when token `i` is "top" or "bottom" saying where the target sits in height (not on a plan): a modifier
@@ -312,13 +310,6 @@ class _Reader:
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
         return owner is not None and (self.span_of.get(owner) == self.target_at or self.points_back(owner))
 
-    def whole_of(self, at: int) -> int | None:
-        """Start of the category span of the thing that the span at `at` names a part of, through the
-        part's "of" ("the shelf [of the bookcase]", "the seat [of the sofa]"), free and not the target; else None."""
-        st, head = self.structure, self.words[self.cat_at[at].end - 1]
-        whole = next((j for j in map(self.span_of.get, st.children(st.of_phrase(head), "pobj")) if j is not None), None)
-        return None if whole is None or whole in self.used or whole == self.target_at else whole
-
     def antecedent(self, objects: set[int]) -> int | None:
         """Start of the category span that a pronoun the cue takes stands for when the cue places the
         target itself ("There's a bookcase in the hall. The vase on top of [it]"): the last one named
@@ -339,14 +330,14 @@ class _Reader:
     def landmark(self, rel: Relation, pos: int) -> bool:
         """Take the next free category phrase from `pos` as a landmark of `rel`; a "one" the cue
         takes stands for another of the target's kind ("the mug beside the chipped one")."""
-        objects = self.cue_objects()  # with the apposition the parser hangs "one" on ("the metal [one]"), or
-        objects |= set(self.structure.children(objects, "appos"))  # the number ("next to blue [one]", not "one chair")
-        bare = {k for k in objects if k in self.attr_words or self.structure.words[k].pos != "NOUN"}
-        objects |= set(self.structure.children(bare, "nummod"))
+        st, objects = self.structure, self.cue_objects()
+        objects |= set(st.children(objects, "appos"))  # the apposition the parser hangs "one" on ("the metal [one]"),
+        bare = {k for k in objects if k in self.attr_words or st.words[k].pos != "NOUN"}
+        objects |= set(st.children(bare, "nummod"))  # or the number ("next to blue [one]", not "one chair")
         one = next((i for i in range(pos, len(self.toks)) if self.toks[i] in ("one", "ones")
                     and self.words[i] in objects), None)
         if one is not None and self.target_at is not None and not set(self.toks[pos:one]) & _NEGATIONS \
-                and self.structure.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
+                and st.of_phrase(self.words[one]) is None:  # "one of the plates": the plates
             at, end, kinds = one, one + 1, self.kinds[self.target_at]
         elif self.place_for_use(rel, pos):
             return True
@@ -356,9 +347,11 @@ class _Reader:
             if at is None:
                 return self.room_landmark(rel, pos)
             self.used.add(at)
-            rel.negated = rel.negated or self.words[at] in self.structure.lacking  # "with no lamp on it"
-            whole = self.whole_of(at)
-            if whole is not None:  # "on the top shelf of the bookcase": in the bookcase, which holds its shelves
+            rel.negated = rel.negated or self.words[at] in st.lacking  # "with no lamp on it"
+            # a part named with a free whole, not the target ("on the top shelf [of the bookcase]"): in the whole
+            of = st.of_phrase(self.words[self.cat_at[at].end - 1])
+            whole = next((j for j in map(self.span_of.get, st.children(of, "pobj")) if j is not None), None)
+            if whole is not None and whole not in self.used and whole != self.target_at:
                 self.parts.add(at)
                 at, rel.kind = whole, "in" if rel.kind == "on" else rel.kind
                 self.used.add(at)
@@ -366,9 +359,9 @@ class _Reader:
             end, kinds = self.cat_at[at].end, self.kinds[at]
             if rel.kind == "on" and self.toks[end:end + 1] == ["side"] and end not in self.cat_at:
                 rel.kind = "closest"  # "on the radiator side (of the desk)": the side nearest the radiator
-            of = self.structure.words[noun].head if (noun := self.noun_of(self.words[at])) is not None else None
-            if of is not None and self.lower(of) == "of":  # "near the foot of the (narrow) cot": that end of it
-                rel.landmark_where = self.which_end(self.structure.words[of].head)
+            of = st.words[noun].head if (noun := self.noun_of(self.words[at])) is not None else None
+            if self.lower(of) == "of":  # "near the foot of the (narrow) cot": that end of it
+                rel.landmark_where = self.which_end(st.words[of].head)
         attrs = self.attrs_before(at) + self.room_at.get(at, ())  # with the room before it ("the living room bookcase")
         return self.add_landmark(rel, kinds, attrs, end, "" if at == one else " ".join(self.toks[at:end]))
 
@@ -397,10 +390,9 @@ class _Reader:
     def room_landmark(self, rel: Relation, pos: int) -> bool:
         """A room said right after a word of nearness ("the stool closest to the garage") as the
         landmark of a relation of nearness: no category, the room's objects (`landmark_attrs`)."""
-        start = next((j for j in self.near_rooms if pos <= j <= pos + 1), None)
-        if start is None or rel.kind not in ("near", "closest", "farthest"):
-            return False
-        return self.add_landmark(rel, (), self.room_at[self.near_rooms[start]], self.near_rooms[start])
+        end = next((e for s, e in self.near_rooms.items() if pos <= s <= pos + 1), None)  # where the room's name ends
+        return end is not None and rel.kind in ("near", "closest", "farthest") \
+            and self.add_landmark(rel, (), self.room_at[end], end)
 
     def named_side(self, i: int) -> int:
         """The position after the category or room phrase at `i`; a phrase other than the target's that
@@ -556,8 +548,6 @@ class _Reader:
             return i  # "the south-east corner of the workbench": a side of it, which the compass word says
         if kind in ("corner", "middle") and nxt == "of":
             return self.place_of(i, kind)
-        if kind == "middle" and self.says_which_landmark(kind):
-            return i
         if kind == "right" and nxt != "of" and i < len(toks) and self.cue_word is not None and (
                 self.word(i).pos == "ADP" and cue.dep != "pobj"
                 or cue.dep == "advmod" and self.word(i).dep != "pobj" and cue.head == self.words[i]):
@@ -566,8 +556,9 @@ class _Reader:
                 and toks[before] in ("in", "at"):
             out.relations[-1].landmark_where = kind  # "near the fern in the corner": the plant's place
             return i
-        if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind
-            out.relations.append(Relation(kind, value="group"))
+        if kind == "middle":  # "the middle one", "it sits at the centre": of the target's kind, unless it is
+            if not self.says_which_landmark(kind):  # the landmark's ("by the middle window")
+                out.relations.append(Relation(kind, value="group"))
             return i
         return self.landmark_relation(i, kind, nxt)
 
@@ -741,10 +732,6 @@ class _Reader:
         self.out.relations.append(rel)
         return i
 
-    def speakers(self, j: int) -> bool:
-        """True when the span at `j` names a thing of the speaker's ("my tablet", "our old rug")."""
-        return any(self.lower(p) in _SPEAKERS for p in self.structure.children(self.words[j], "poss"))
-
     def target(self) -> SpatialQuery:
         """The target is the first category left, unless it only says what the target is for
         ("the cloth for the glasses"): then there is no named target."""
@@ -752,7 +739,8 @@ class _Reader:
         target = self.target_at if self.target_at is not None else next(
             (j for j in sorted(self.cat_at) if j not in self.used and self.words[j] is not None
              and self.words[j] not in self.structure.lacking  # nor what the request rules out
-             and not self.speakers(j)  # nor a thing of the speaker's ("my tablet is flat")
+             # nor a thing of the speaker's ("my tablet is flat", "our old rug")
+             and not any(self.lower(p) in _SPEAKERS for p in self.structure.children(self.words[j], "poss"))
              and not set(self.kinds[j]) <= info.excluded_targets), None)
         if target is not None and target > 0 and toks[target - 1] == "for":
             target = None
