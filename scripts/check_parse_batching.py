@@ -23,15 +23,19 @@ REPO = Path(__file__).resolve().parents[1]
 REFERRING = REPO.parent / "shared" / "data" / "referring_dev"
 
 
-def suite_texts() -> list[str]:
-    """Every query of the shipped suites, the blind rounds and the referring corpus, spelt and
-    normalised as the reading parses it, each once."""
+def suite_queries() -> list[str]:
+    """Every query of the shipped suites, the blind rounds and the referring corpus as written, each once, in order."""
     paths = [*sorted((REPO / "evals").glob("*.jsonl")), *sorted((REPO / "evals" / "blind").glob("round*.jsonl")),
              *(REFERRING / f"{stem}.jsonl" for stem in ("scanrefer_dev", "nr3d_dev"))]
-    lex = load_lexicon()
     texts = [json.loads(line).get("query") for path in paths if path.is_file()
              for line in path.read_text().splitlines() if line.strip()]
-    return list(dict.fromkeys(parse.normalise(lex.respell(t)) for t in texts if t))
+    return list(dict.fromkeys(t for t in texts if t))
+
+
+def suite_texts() -> list[str]:
+    """`suite_queries`, spelt and normalised as the reading parses them, each once."""
+    lex = load_lexicon()
+    return list(dict.fromkeys(parse.normalise(lex.respell(t)) for t in suite_queries()))
 
 
 def tokens(doc) -> list[tuple]:
