@@ -430,13 +430,14 @@ def _read_words(lex: Lexicon, reading: _Reading, target: _Target, covered: set[i
                            if i not in covered and i not in used and len(t) > 2 and t not in stop)
     words = {*info.extra, *landmark_words, *(w for slot in info.slots for w in slot.base.split())}
     info.overlap = frozenset(stem(w) for w in words if len(w) > 2)
+    known = covered | used
     if not _named(info) and not info.afford:
-        info.unknown_target = _unknown_run(surface, lemmas, covered | used, stop, 0, target.end)
+        info.unknown_target = _unknown_run(surface, lemmas, known, stop, 0, target.end)
     place = next((i for i, t in enumerate(lemmas) if t in _PLACE_PREPOSITIONS), None)
     if place is not None and not any(w >= 1.0 for w in info.rooms.values()):
         stop_at = next((i for i in range(place + 1, len(lemmas)) if lemmas[i] in bounds), len(lemmas))
-        if (covered | used).isdisjoint(range(place + 1, stop_at)):  # no word of the place phrase is a lexicon phrase
-            info.unknown_room = _unknown_run(surface, lemmas, covered | used, stop, place + 1, stop_at)
+        if known.isdisjoint(range(place + 1, stop_at)):  # no word of the place phrase is a lexicon phrase
+            info.unknown_room = _unknown_run(surface, lemmas, known, stop, place + 1, stop_at)
 
 
 def functional_kin(lex: Lexicon, named: list[str]) -> dict[str, float]:

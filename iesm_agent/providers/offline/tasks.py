@@ -92,7 +92,7 @@ def _role_score(q: QueryInfo, role: str, on_map: bool = True) -> tuple[int, str]
             return 3, attrs
         return min(3 if q.afford else 4, round(1.5 + 1.5 * n_desc)), attrs
     top = [c for c, w in sorted(q.afford.items(), key=lambda kv: -kv[1]) if w >= 1.0][:4]
-    if q.named:  # a use said of a thing the map does not have ("reheat my soup") is the better evidence
+    if q.named:  # a use said of a thing the map does not have ("toast some bread") is the better evidence
         score = (3 if q.purpose and not on_map else 1) if q.afford else 0
     elif q.afford:
         score = 4 if q.purpose else 2
