@@ -1,7 +1,8 @@
 """The spatial expert where the request names a landmark the map lacks: a point to be near or far
 from is read as the map label its name stands for (by the sentence encoder, here a fixed table);
 the expert abstains as before when no label is near enough, no encoder is installed, or the thing
-is one to be on or with (a part a caption may name)."""
+is one to be on or with (a part a caption may name), unless another relation the map can answer
+is stated: then those rank."""
 
 import pytest
 
@@ -55,3 +56,16 @@ def test_a_part_said_with_with_is_not_read_as_another_label(shop):
     query = "a stool with a cushion"
     assert [r.kind for r in parse_query(query).relations] == ["with"]
     assert spatial(shop, query, provider=TableModel()) == []  # a caption's part, not a plant beside it
+
+
+@pytest.mark.parametrize("query", [
+    "the stool beside the piano that is nearest the door",  # a point to be near, and no piano here
+    "the stool with a cushion, nearest the door",            # a part to be with, and no cushion here
+])
+def test_a_relation_to_a_missing_landmark_leaves_the_others_to_rank(shop, query):
+    assert len(parse_query(query).relations) == 2
+    assert spatial(shop, query) == [2, 3]  # by the door, the one relation the map can answer
+
+
+def test_no_relation_the_map_can_answer_still_gives_no_ranking(shop):
+    assert spatial(shop, "the stool beside the piano") == []

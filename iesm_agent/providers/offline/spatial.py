@@ -6,8 +6,9 @@ target kind, colour/material words and relations to landmark categories, then sc
 candidates of the target kind from the geometry fenced in the prompt (`center`, `size`,
 `z_range`, `on`, `under`), with landmarks found by category among the candidates and the
 reference objects; a landmark to be near or far from whose kind the map lacks is read as the map
-label its name misspells or is nearest to ("the archway" where the map has a "door"). No relation,
-no target, or a landmark the map lacks even so: an empty ranking.
+label its name misspells or is nearest to ("the archway" where the map has a "door"). A relation
+whose landmark the map lacks even so is left unread and the others rank; no relation, no target,
+or none left to rank by: an empty ranking.
 """
 
 from __future__ import annotations
@@ -567,12 +568,12 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
         total += _LOOK * _rank_score(np.array(look))
     placed = np.ones(len(targets), bool)  # the targets that meet every contact relation stated
     comparisons = [rel for rel in relations if rel.kind == "extreme" and not rel.negated]
-    for rel in relations:
-        if rel.kind == "extreme" and not rel.negated:
-            continue  # ranked below, among the placed targets
-        scores = _relation_scores(rel, scene, targets, view)
-        if scores is None:
-            return abstain("a landmark the map lacks")  # no guess
+    stated = [rel for rel in relations if not (rel.kind == "extreme" and not rel.negated)]
+    scored = [(rel, _relation_scores(rel, scene, targets, view)) for rel in stated]
+    scored = [(rel, scores) for rel, scores in scored if scores is not None]  # a landmark the map lacks: unread
+    if not scored and not comparisons:
+        return abstain("a landmark the map lacks")  # no relation left to guess by
+    for rel, scores in scored:
         total += 1.0 - scores if rel.negated else scores
         if rel.kind in _CONTACT and not rel.negated:
             placed &= scores >= _MET
