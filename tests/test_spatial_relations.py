@@ -1023,3 +1023,24 @@ def test_a_compass_side_prefers_what_lies_squarely_that_way(tmp_path):
                                   box(2, "stool", (2.9, 2.8, 0.35), (0.35, 0.35, 0.7)),
                                   box(3, "stool", (2.0, 3.2, 0.35), (0.35, 0.35, 0.7))])
     assert spatial(store, "the stool due north of the workbench")[0] == 3
+
+
+# A yard by a shed door: bins of one kind under two names, the one nearest the door a "trash can".
+BINS = [
+    box(1, "door", (5.0, 2.0, 1.0), (0.05, 0.9, 2.0)),
+    box(2, "trash can", (4.5, 2.0, 0.4), (0.5, 0.5, 0.8)),
+    box(3, "recycling bin", (3.5, 2.2, 0.4), (0.5, 0.5, 0.8)),
+    box(4, "recycling bin", (1.0, 3.5, 0.4), (0.5, 0.5, 0.8)),
+    box(5, "bench", (0.5, 2.8, 0.25), (0.4, 1.2, 0.5)),
+]
+
+
+@pytest.mark.parametrize("query, best", [
+    # the map tells one kind apart by name, and the request says that name: those only
+    ("the recycling bin nearest the door", 3),
+    ("the recycling bin farthest from the bench", 3),
+    # the other name said: the one so named, wherever it is
+    ("the trash can farthest from the door", 2),
+])
+def test_a_kind_the_map_names_two_ways_is_ranked_by_the_name_said(tmp_path, query, best):
+    assert spatial(make_store(tmp_path, BINS), query)[0] == best

@@ -554,6 +554,13 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
                         for cats in (sq.facing, sq.viewer_at)))
     if sq.target and reading.head_words:
         targets = targets[_not_named_in_part(scene, targets, reading.head_words)]
+        # a map that names one kind two ways ("recycling bin", "trash can") tells them apart by the name said;
+        # so does a name of several words ("file cabinet"); one word that is also a class's ("chair" of an
+        # "armchair", "machine") only breaks near ties (below)
+        said_in_full = np.array([reading.head_words <= scene.label_words[t] for t in targets], bool)
+        one_kind = len({scene.concepts[t][0][0] if scene.concepts[t] else None for t in targets}) == 1
+        if said_in_full.any() and (len(reading.head_words) > 1 or one_kind):
+            targets = targets[said_in_full]
         total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, relations)
     else:
         total = np.zeros(len(targets))
