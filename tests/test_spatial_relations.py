@@ -1044,3 +1044,22 @@ BINS = [
 ])
 def test_a_kind_the_map_names_two_ways_is_ranked_by_the_name_said(tmp_path, query, best):
     assert spatial(make_store(tmp_path, BINS), query)[0] == best
+
+
+@pytest.mark.parametrize("text, relations, facing", [
+    # the target turned towards a thing: near it (an object list has no orientation to read)
+    ("This is a red chair. It is facing the door.", [("near", [("door",)], False)], ()),
+    ("the chair which is facing the door", [("near", [("door",)], False)], ()),
+    ("the chair that is not facing the door", [("near", [("door",)], True)], ()),
+    ("the blue chair facing the door", [("near", [("door",)], False)], ()),
+    # the viewer's way of looking, however the parse attaches it (a side needs a viewpoint)
+    ("the red chair on the left when you face the door", [("left", [], False)], ("door",)),
+    ("red chair on the left, facing the door", [("left", [], False)], ("door",)),
+])
+def test_facing_said_of_the_target_is_a_relation_said_of_the_viewer_a_viewpoint(text, relations, facing):
+    q = parse_query(text)
+    assert ([(r.kind, r.landmarks, r.negated) for r in q.relations], q.facing) == (relations, facing)
+
+
+def test_the_chair_turned_to_the_door_is_the_one_beside_it(room):
+    assert spatial(room, "It is a chair. It is facing the door.")[0] == 10

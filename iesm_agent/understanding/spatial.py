@@ -57,6 +57,7 @@ _PEOPLE = _ANYONE | {"i", "you", "u", "ur", "we"}  # whoever may sit or look: an
 _WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
 _BEING = AUXILIARIES | {"s", "placed", "located"}
+_RELATIVE_PRONOUNS = frozenset({"that", "which", "who"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
 #: verbs after which "at" names what is looked at, not what the target is by
@@ -583,6 +584,12 @@ class _Reader:
         first free category after that mark that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""
         at, st = self.target_at, self.structure
+        if self.turned_target():  # "it is facing the desk", "the chair that faces the door": near what it faces
+            found = len(self.out.relations)
+            i = self.landmark_relation(i, "near", self.toks[i] if i < len(self.toks) else "")
+            if len(self.out.relations) > found and st.children(self.cue_word, "neg"):
+                self.out.relations[-1].negated = True  # "the window that is not facing the tables"
+            return i
         ends = [k for k in (self.corrected.find(c, self.offsets[i - 1]) for c in ",:;") if k >= 0]
         end = -1 if at is None or at < i or not ends else min(ends)  # where the clause ends
         if end >= 0 and self.offsets[at] < end:
@@ -596,6 +603,24 @@ class _Reader:
             self.used.add(j)
             self.out.facing = self.kinds[j]
         return i
+
+    def turned_target(self) -> bool:
+        """True when the facing cue says which way the target is turned: its subject is the target or points
+        back to it ("it is facing ..."), or it is a relative clause on the target with no subject of its own
+        but the relative pronoun ("the chair that is facing ...") or a participle on it in a request that says
+        no side; not the viewer's ("when you face ...", "the left cushion, facing the TV": where one looks from)."""
+        st, at = self.structure, self.target_at
+        if self.cue_word is None or at is None:
+            return False
+        cue, subject = st.words[self.cue_word], next(iter(st.children(self.cue_word, "nsubj")), None)
+        if cue.dep == "relcl" and (subject is None or self.lower(subject) in _RELATIVE_PRONOUNS) or (
+                cue.dep == "acl" and not self.sided()):  # "the bench facing the sofa"; not "left seat facing ..."
+            subject = cue.head
+        return subject is not None and (self.span_of.get(subject) == at or self.points_back(subject))
+
+    def sided(self) -> bool:
+        """True when the request says a side ("left", "right"), which needs a viewpoint to be read from."""
+        return any(_CUES.get((token,)) in ("left", "right") for token in self.toks)
 
     def viewer_place(self) -> bool:
         """True when the cue word places the one who looks, not the target: it hangs on "stand"
