@@ -608,13 +608,13 @@ class _Reader:
         """True when the facing cue says which way the target is turned: its subject is the target or points
         back to it ("it is facing ..."), or it is a relative clause on the target with no subject of its own
         but the relative pronoun ("the chair that is facing ...") or a participle on it in a request that says
-        no side; not the viewer's ("when you face ...", "the left cushion, facing the TV": where one looks from)."""
+        no side; not the viewer's ("when you face ...", "the left stool, facing the window": where one looks from)."""
         st, at = self.structure, self.target_at
         if self.cue_word is None or at is None:
             return False
         cue, subject = st.words[self.cue_word], next(iter(st.children(self.cue_word, "nsubj")), None)
         if cue.dep == "relcl" and (subject is None or self.lower(subject) in _RELATIVE_PRONOUNS) or (
-                cue.dep == "acl" and not self.sided()):  # "the bench facing the sofa"; not "left seat facing ..."
+                cue.dep == "acl" and not self.sided()):  # "the bench facing the sofa"; not "the left one facing ..."
             subject = cue.head
         return subject is not None and (self.span_of.get(subject) == at or self.points_back(subject))
 
