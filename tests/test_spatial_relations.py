@@ -1040,7 +1040,7 @@ BINS = [
     ("the recycling bin nearest the door", 3),
     ("the recycling bin farthest from the bench", 3),
     # the other name said: the one so named, wherever it is
-    ("the trash can farthest from the door", 2),
+    ("the trash can farthest away from the shed door", 2),
 ])
 def test_a_kind_the_map_names_two_ways_is_ranked_by_the_name_said(tmp_path, query, best):
     assert spatial(make_store(tmp_path, BINS), query)[0] == best
