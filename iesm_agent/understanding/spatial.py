@@ -57,6 +57,7 @@ _PEOPLE = _ANYONE | {"i", "you", "u", "ur", "we"}  # whoever may sit or look: an
 _WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
 _BEING = AUXILIARIES | {"s", "placed", "located"}
+#: the subjects of a relative clause that stand for the noun it hangs on ("the chair that is facing ...")
 _RELATIVE_PRONOUNS = frozenset({"that", "which", "who"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
@@ -584,7 +585,7 @@ class _Reader:
         first free category after that mark that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""
         at, st = self.target_at, self.structure
-        if self.turned_target():  # "it is facing the desk", "the chair that faces the door": near what it faces
+        if self.turned_target():  # "it is facing the desk", "the chair that is facing the door": near what it faces
             found = len(self.out.relations)
             i = self.landmark_relation(i, "near", self.toks[i] if i < len(self.toks) else "")
             if len(self.out.relations) > found and st.children(self.cue_word, "neg"):
