@@ -1046,6 +1046,13 @@ def test_a_kind_the_map_names_two_ways_is_ranked_by_the_name_said(tmp_path, quer
     assert spatial(make_store(tmp_path, BINS), query)[0] == best
 
 
+def test_a_one_word_name_a_subkind_also_answers_to_only_breaks_near_ties(tmp_path):
+    # an armchair is a chair: "chair" said keeps it, and the relation decides
+    seats = [box(1, "door", (5.0, 2.0, 1.0), (0.05, 0.9, 2.0)), box(2, "armchair", (4.3, 2.0, 0.4), (0.8, 0.8, 0.8)),
+             box(3, "chair", (1.0, 1.0, 0.45), (0.45, 0.45, 0.9))]
+    assert spatial(make_store(tmp_path, seats), "the chair closest to the shed door")[0] == 2
+
+
 @pytest.mark.parametrize("text, relations, facing", [
     # the target turned towards a thing: near it (an object list has no orientation to read)
     ("This is a red chair. It is facing the door.", [("near", [("door",)], False)], ()),

@@ -310,7 +310,11 @@ class _Reader:
         if st.words[owner].pos in ("VERB", "AUX"):  # of a thing on it ("a radio resting on top")
             subject = next(iter(st.children(owner, "nsubj")), None)
             owner = st.words[owner].head if st.words[owner].dep in ("acl", "relcl") else subject
-        return owner is not None and (self.span_of.get(owner) == self.target_at or self.points_back(owner))
+        return self.said_of_target(owner)
+
+    def said_of_target(self, k: int | None) -> bool:
+        """True when the parsed word `k` is the target's noun or points back to it (`points_back`)."""
+        return k is not None and (self.span_of.get(k) == self.target_at or self.points_back(k))
 
     def antecedent(self, objects: set[int]) -> int | None:
         """Start of the category span that a pronoun the cue takes stands for when the cue places the
@@ -571,8 +575,7 @@ class _Reader:
         where, `located_by_pronoun`). The position after it."""
         st, cue = self.structure, self.word(i - 1)
         holder = cue.head if cue.dep in ("relcl", "acl") else next(iter(st.children(self.cue_word, "nsubj")), None)
-        if holder is None or self.target_at is None or (
-                self.span_of.get(holder) != self.target_at and not self.points_back(holder)):
+        if self.target_at is None or not self.said_of_target(holder):
             return i
         if any(k > self.cue_word and st.dominates(self.cue_word, k) and self.lower(k) in BACK_REFERENCES | {"its"}
                for k in range(len(st.words))):
@@ -610,14 +613,14 @@ class _Reader:
         back to it ("it is facing ..."), or it is a relative clause on the target with no subject of its own
         but the relative pronoun ("the chair that is facing ...") or a participle on it in a request that says
         no side; not the viewer's ("when you face ...", "the left stool, facing the window": where one looks from)."""
-        st, at = self.structure, self.target_at
-        if self.cue_word is None or at is None:
+        st = self.structure
+        if self.cue_word is None or self.target_at is None:
             return False
         cue, subject = st.words[self.cue_word], next(iter(st.children(self.cue_word, "nsubj")), None)
         if cue.dep == "relcl" and (subject is None or self.lower(subject) in _RELATIVE_PRONOUNS) or (
                 cue.dep == "acl" and not self.sided()):  # "the bench facing the sofa"; not "the left one facing ..."
             subject = cue.head
-        return subject is not None and (self.span_of.get(subject) == at or self.points_back(subject))
+        return self.said_of_target(subject)
 
     def sided(self) -> bool:
         """True when the request says a side ("left", "right"), which needs a viewpoint to be read from."""

@@ -558,8 +558,8 @@ def rank(prompt: Prompt, encoder: Callable[[], Any] | None = None) -> dict:
         # so does a name of several words ("file cabinet"); one word that is also a class's ("chair" of an
         # "armchair", "machine") only breaks near ties (below)
         said_in_full = np.array([reading.head_words <= scene.label_words[t] for t in targets], bool)
-        one_kind = len({scene.concepts[t][0][0] if scene.concepts[t] else None for t in targets}) == 1
-        if said_in_full.any() and (len(reading.head_words) > 1 or one_kind):
+        if said_in_full.any() and (len(reading.head_words) > 1 or len(
+                {scene.concepts[t][0][0] if scene.concepts[t] else None for t in targets}) == 1):  # one kind
             targets = targets[said_in_full]
         total = _LITERAL_NAME * _named_most_literally(scene, targets, reading.head_words, relations)
     else:
