@@ -464,6 +464,19 @@ def test_what_will_do_after_so_names_the_target(text, target):
     assert _target(text) == target
 
 
+@pytest.mark.parametrize("text, target", [
+    ("Lunch is almost ready, so any stool at the counter is fine", "stool"),  # the subject of "is fine"
+    ("I'll be washing plates, so the stool closest to the sink, not the one by the fridge", "stool"),  # no verb
+    ("The batteries are in the wooden one, so the narrow drawer, not the metal ones", "drawer"),  # hung on "are"
+    ("The guests are here, so any bathroom doorway, not the kitchen ones", "doorway"),  # a compound read as a clause
+    ("It's freezing tonight, so the thick wool blanket on the chest", "blanket"),  # after a sentence opening "it"
+    ("It is raining, so the umbrella by the front door", "umbrella"),
+    ("I want to wipe the shelf above my desk; the pale grey one in the study, not the bookcase", "shelf"),
+])
+def test_a_phrase_after_so_with_no_verb_of_its_own_is_the_request(text, target):
+    assert _target(text) == target
+
+
 def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
     text = "I want to make toast, so the chrome one by the bread bin, not the oven"
     info = analyse_query(text)

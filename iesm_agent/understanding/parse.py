@@ -15,7 +15,7 @@ from functools import lru_cache, reduce
 
 from ..errors import IesmError
 from ..lexicon import PIPELINE, load_lexicon, read_data
-from .clauses import TARGET_PRONOUNS
+from .clauses import NEARNESS, TARGET_PRONOUNS
 from .motion import MOTION_VERBS, POSTURE_VERBS
 
 #: words that stand for the target itself when they are a sentence's subject ("it is by the sink")
@@ -315,22 +315,47 @@ def _opening(sent):
 
 def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     """(kind, target) of a sentence whose target is named again: with "that" or "this" after a comma or a colon
-    ("the far end of the bench, that stool"), as a phrase with no verb after "so", a semicolon or a colon ("I'd
-    like to read, so any lamp in the den"), or as the subject of a verb of sufficing ("so any lamp will do")."""
-    for t in () if kind in ("empty", "continuation") else sent:
+    ("the far end of the bench, that stool"), or after "so", a semicolon or a colon with no verb of its own (the
+    reason before it: "I'd like to read, so any lamp in the den"): a phrase the parser hung on the clause before
+    ("it's dark in here, so the tall lamp"), the subject of a predicate with no verb ("so the stool nearest the
+    door") or of a verb of sufficing ("so any lamp will do", "so any stool is fine"). A phrase after "so" asks
+    even when the clause before it only went on about something ("it's late, so the lamp by the bed")."""
+    if kind == "empty":
+        return kind, found
+    for t in sent:
         first = t.left_edge  # its phrase after "so", ";" or ":", or opening with "so" (the parser took it for a clause)
-        after_so = first.i > sent.start and (first.lower_ == "so" or t.doc[first.i - 1].lower_ in ("so", ";", ":"))
+        so = first.i - 1 if first.lower_ != "so" else first.i
+        after_so = first.i > sent.start and t.doc[so].lower_ in ("so", ";", ":")
         stand_in = t.lower_ in ("one", "ones")  # "so the brass one": the target's stand-in, its own determiner
         pointed = t.pos_ in NOUNS and t.dep_ in ("appos", "npadvmod") and any(
             c.dep_ == "det" and c.lower_ in _POINTING and c.i > sent.start and c.nbor(-1).text in (",", ":")
             for c in t.children)
         determined = stand_in or any(c.dep_ == "det" or c.lower_ in _POINTING for left in t.lefts for c in left.subtree)
-        after = (t.pos_ in NOUNS or stand_in) and after_so and (t.dep_ in ("dep", "dobj", "appos") or determined and (
-            t.dep_ in ("advcl", "npadvmod", "conj")  # a verbless phrase the parser took for a clause
-            or t.dep_ == "nsubj" and t.head.lemma_ in ("do", "work", "suffice")))
-        if pointed or after:
-            return kind, t.i
+        if kind == "continuation" and not determined:
+            continue  # ("it's late, so the lamp"; not a list after a colon: "..., switch on: floor or desk")
+        if pointed or (t.pos_ in NOUNS or stand_in) and after_so and (
+                t.dep_ in ("dep", "dobj", "appos") or determined and _verbless(t, so)):
+            return ("request" if kind == "continuation" else kind), t.i
     return kind, found
+
+
+#: predicates that say any such thing will do ("any lamp will do", "any stool is fine")
+_SUFFICING = frozenset({"do", "work", "suffice", "fine", "ok", "okay", "good", "great", "alright", "enough", "perfect"})
+
+
+def _verbless(token, so: int) -> bool:
+    """True when `token`, after the word at `so`, heads a phrase with no verb of its own: hung on a clause before
+    `so`, a phrase the parser took for a clause (a modifier, a conjunct, a complement), the subject of a word of
+    place or comparison with no verb ("the chair nearest the sink") or of a predicate of sufficing."""
+    head = token.head
+    if head.i < so or token.dep_ in ("advcl", "npadvmod", "conj", "ccomp"):
+        return True  # (a noun heads no clause: "so any hall doorway" parsed as a clause of "hall")
+    if token.dep_ != "nsubj":
+        return False
+    placing = head.tag_ in ("JJR", "JJS", "RBR", "RBS") or head.pos_ == "ADP" or head.lower_ in NEARNESS
+    verbless = placing and not any(c.pos_ == "AUX" for c in head.children)
+    said = {head.lemma_} | {c.lemma_ for c in head.children if c.dep_ in ("acomp", "attr")}
+    return verbless or bool(said & _SUFFICING)
 
 
 def _past_looks(token) -> int:
