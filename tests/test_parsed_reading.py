@@ -410,6 +410,20 @@ def test_a_room_word_used_as_a_verb_names_no_room():
     assert analyse_query("the rug in the sitting room").rooms == {"living room": 1.0}
 
 
+@pytest.mark.parametrize("text, room", [
+    ("could you find one of the study's armchairs", "study"),  # a room in the possessive is the target's room
+    ("take me to the garage's workbench", "garage"),
+    ("the laundry room's basket, please", "laundry room"),
+])
+def test_a_room_named_in_the_possessive_is_the_room(text, room):
+    found = analyse_query(text).rooms
+    assert found and found == analyse_query(f"a chair in the {room}").rooms
+
+
+def test_is_shortened_after_a_thing_names_no_possessive():
+    assert analyse_query("the sun's in my eyes, take me to the blind").rooms == {}
+
+
 def test_a_thing_before_a_hyphened_colour_suffix_is_a_colour():
     rug = analyse_query("the light-coloured rug")
     assert rug.targets == {"rug": 1.0} and not {"ceiling lamp", "floor lamp"} & set(rug.afford)  # no wish for light

@@ -62,6 +62,8 @@ class Lexicon:
     commands: tuple[tuple[str, ...], ...]
     lemmas: dict[str, str]
     vocab: frozenset[str]
+    #: words of the names of rooms ("room" of "living room"), whose possessive is the room's ("the study's desk")
+    room_words: frozenset[str] = frozenset()
     cue_sequences: dict[str, tuple[tuple[tuple[str, ...], str], ...]] = field(default_factory=dict)
     #: a word that says which room of a type -> the word of its meaning a map may name it with ("main": master)
     room_qualifiers: dict[str, str] = field(default_factory=dict)
@@ -78,7 +80,9 @@ class Lexicon:
         hit = self._lemma_cache.get(token)
         if hit is not None:
             return hit
-        result = self.lemmas.get(token) or _guess_lemma(token, self.vocab)
+        base = token[:-2] if token.endswith("'s") else None  # "the kitchen's sink" (not "dinner's ready": "is")
+        result = self.lemmas.get(token) or (self.lemma(base) if base in self.room_words else
+                                            _guess_lemma(token, self.vocab))
         if len(self._lemma_cache) < 200_000:
             self._lemma_cache[token] = result
         return result
@@ -455,6 +459,7 @@ def load_lexicon() -> Lexicon:
     lemmas = dict(lang["lemmas"])
     tok = _TOKEN.findall
     vocab = frozenset(w for surface, _, _ in raw for w in tok(surface.lower()))
+    room_words = frozenset(tok(surface.lower())[-1] for surface, kind, _ in raw if kind == "room")  # ("room", "study")
     lex = Lexicon(
         phrases={}, max_len=1, ancestors=_closure(cats["parents"]),
         generic={noun: _weights([noun, *g["core"]], g["related"]) for noun, g in cats["generic"].items()},
@@ -470,7 +475,7 @@ def load_lexicon() -> Lexicon:
            "relations": frozenset(w for table in (lang["relation_cues"], lang["extremes"]) for cues in table.values()
                                   for cue in cues for w in cue.split())},
         commands=(),
-        lemmas=lemmas, vocab=vocab,
+        lemmas=lemmas, vocab=vocab, room_words=room_words,
         room_qualifiers={word: group[0] for group in rooms["qualifiers"] for word in group},
     )
     phrases: dict[tuple[str, ...], list[tuple[str, str]]] = {}
