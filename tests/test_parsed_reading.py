@@ -491,6 +491,16 @@ def test_a_phrase_after_so_with_no_verb_of_its_own_is_the_request(text, target):
     assert _target(text) == target
 
 
+@pytest.mark.parametrize("text, target", [
+    ("This is the study with two desk lamps. Take me to the one nearer the window.", "lamps"),
+    ("There are two tall stools at the counter. I want the one nearer the kettle.", "stools"),
+    ("Of the two green cushions, take me to the one nearer the lamp.", "cushions"),
+])
+def test_the_one_nearer_a_thing_is_a_stand_in_not_a_noun(text, target):
+    # the tagger reads "nearer" as a noun with "one" as its number: the one stands for the kind named before
+    assert _target(text) == target
+
+
 def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
     text = "I want to make toast, so the chrome one by the bread bin, not the oven"
     info = analyse_query(text)

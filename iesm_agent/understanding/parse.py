@@ -405,7 +405,11 @@ def _made(token) -> bool:
 def _noun_of(token) -> int | None:
     """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
     the parse puts where a noun goes but tags otherwise ("the paint can is", "the kettle nearest to"),
-    the noun compounded with it; else None."""
+    or a word of nearness it tags as a noun ("the one nearer to the door"), the noun compounded with it
+    or the stand-in before it; else None."""
+    if token.pos_ in NOUNS and token.lower_ in NEARNESS:  # "the one nearer to the door", tagged as a noun
+        return next((c.i for c in reversed(list(token.lefts)) if c.lower_ in ("one", "ones")
+                     or c.dep_ == "compound" and c.pos_ in NOUNS), token.i)
     if token.pos_ in NOUNS:
         return token.i
     named = _partitive(token) if token.pos_ in ("PRON", "DET", "NUM", "ADJ") else None
