@@ -501,6 +501,15 @@ def test_the_one_nearer_a_thing_is_a_stand_in_not_a_noun(text, target):
     assert _target(text) == target
 
 
+@pytest.mark.parametrize("text, target", [
+    ("The kettle's boiling, so take me to a mug on the shelf", "mug"),  # parsed as "the kettle's boiling" taking
+    ("Lunch's nearly ready, so take me to a stool in the kitchen", "stool"),
+    ("The lamp by the door, go there", "lamp"),  # a thing named first, then where to go: that thing
+])
+def test_a_reason_before_so_is_no_subject_of_the_command_after_it(text, target):
+    assert _target(text) == target
+
+
 def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
     text = "I want to make toast, so the chrome one by the bread bin, not the oven"
     info = analyse_query(text)

@@ -427,9 +427,18 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
         and (t.dep_ in ("ROOT", "ccomp", "conj", "parataxis", "dep")  # or a motion verb opening it, parsed as a clause
              or t.dep_ == "advcl" and t.i == sent.start and t.lower_ in MOTION_VERBS)
         and t.lemma_ != "be"  # "there are magazines on it" states, it does not ask
-        and next((c.lower_ == "you" for c in t.children if c.dep_ in ("nsubj", "nsubjpass") and c.i < t.i), True))]
+        and next((c.lower_ == "you" or _cut_off(c, t) for c in t.children
+                  if c.dep_ in ("nsubj", "nsubjpass") and c.i < t.i), True))]
     found = [(t, _object_of(doc, t)) for t in reversed(commands)]
     return next(((t, obj) for t, obj in found if obj is not None), found[-1] if found else None)
+
+
+def _cut_off(subject, verb) -> bool:
+    """True when ", so" stands between `subject` and `verb`: a reason of its own the parser folded into the
+    command ("dinner's ready, so take me to a seat": "dinner" is no subject of "take"; but "the lamp by the
+    door, go there": the lamp is where to go)."""
+    between = [t.lower_ for t in subject.doc[subject.right_edge.i + 1:verb.i]]
+    return any(a == "," and b == "so" for a, b in zip(between, between[1:]))
 
 
 def _misread_verb(token) -> bool:
