@@ -510,6 +510,15 @@ def test_a_reason_before_so_is_no_subject_of_the_command_after_it(text, target):
     assert _target(text) == target
 
 
+@pytest.mark.parametrize("text, target", [
+    ("facing the fireplace, the stool on the right", "stool"),  # parsed as two objects of "facing"
+    ("facing the sink, the towel rail on the left", "rail"),
+    ("facing the window", "window"),  # one object: what is faced is all the request names
+])
+def test_after_where_the_viewer_faces_the_thing_named_is_the_target(text, target):
+    assert _target(text) == target
+
+
 def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
     text = "I want to make toast, so the chrome one by the bread bin, not the oven"
     info = analyse_query(text)

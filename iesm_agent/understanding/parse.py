@@ -466,6 +466,8 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             return seat  # ("I'd like to sit down in the den, in one of the armchairs")
     ruled_out = min((c.i for c in verb.children if c.dep_ == "neg" and c.i > verb.i), default=len(doc))
     kept = [c for c in verb.children if c.i < ruled_out]  # "lead me to the stool, not the cane one": not that one
+    if verb.lemma_ == "face":  # "facing the window, the lamp on the left": the parser's second object is the target
+        kept.sort(key=lambda c: not (c.dep_ == "dobj" and any(t.text == "," for t in verb.doc[verb.i:c.i])))
     for child in () if clauses_only else kept:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where
         if child.dep_ == "dobj":  # of two objects ("hand the visitor a towel") the second is the thing
