@@ -420,7 +420,7 @@ def test_a_room_named_in_the_possessive_is_the_room(text, room):
     assert found and found == analyse_query(f"a chair in the {room}").rooms
 
 
-def test_is_shortened_after_a_thing_names_no_possessive():
+def test_is_shortened_after_a_thing_names_no_possessive():  # a guard: "'s" after a thing's name is as often "is"
     assert analyse_query("the sun's in my eyes, take me to the blind").rooms == {}
 
 
@@ -485,7 +485,7 @@ def test_what_will_do_after_so_names_the_target(text, target):
     ("The guests are here, so any bathroom doorway, not the kitchen ones", "doorway"),  # a compound read as a clause
     ("It's freezing tonight, so the thick wool blanket on the chest", "blanket"),  # after a sentence opening "it"
     ("It is raining, so the umbrella by the front door", "umbrella"),
-    ("I want to wipe the shelf above my desk; the pale grey one in the study, not the bookcase", "shelf"),
+    ("I want to wipe the shelf above my desk; the pale grey one in the study, not the bookcase", "shelf"),  # guard
 ])
 def test_a_phrase_after_so_with_no_verb_of_its_own_is_the_request(text, target):
     assert _target(text) == target
@@ -504,7 +504,7 @@ def test_the_one_nearer_a_thing_is_a_stand_in_not_a_noun(text, target):
 @pytest.mark.parametrize("text, target", [
     ("The kettle's boiling, so take me to a mug on the shelf", "mug"),  # parsed as "the kettle's boiling" taking
     ("Lunch's nearly ready, so take me to a stool in the kitchen", "stool"),
-    ("The lamp by the door, go there", "lamp"),  # a thing named first, then where to go: that thing
+    ("The lamp by the door, go there", "lamp"),  # guard: a thing named first, then where to go: that thing
 ])
 def test_a_reason_before_so_is_no_subject_of_the_command_after_it(text, target):
     assert _target(text) == target
@@ -513,7 +513,7 @@ def test_a_reason_before_so_is_no_subject_of_the_command_after_it(text, target):
 @pytest.mark.parametrize("text, target", [
     ("facing the fireplace, the stool on the right", "stool"),  # parsed as two objects of "facing"
     ("facing the sink, the towel rail on the left", "rail"),
-    ("facing the window", "window"),  # one object: what is faced is all the request names
+    ("facing the window", "window"),  # guard: one object: what is faced is all the request names
 ])
 def test_after_where_the_viewer_faces_the_thing_named_is_the_target(text, target):
     assert _target(text) == target
