@@ -519,6 +519,16 @@ def test_after_where_the_viewer_faces_the_thing_named_is_the_target(text, target
     assert _target(text) == target
 
 
+@pytest.mark.parametrize("text, target", [
+    ("Turn and face the fireplace and it's the stool on the right", "stool"),  # what is faced is the viewpoint
+    ("Facing the sofa you need to pick the lamp nearest to you", "lamp"),
+    ("Turn so that you are facing the bookcase and it's the second box from the left", "box"),
+    ("Face the window", "window"),  # guard: nothing else named
+])
+def test_a_thing_named_after_what_the_viewer_faces_is_the_target(text, target):
+    assert _target(text) == target
+
+
 def test_a_stand_in_after_so_is_the_target_not_the_thing_ruled_out_after_it():
     text = "I want to make toast, so the chrome one by the bread bin, not the oven"
     info = analyse_query(text)

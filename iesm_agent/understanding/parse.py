@@ -182,7 +182,7 @@ def _parse_sentences(text: str, at: int = 0) -> Structure:
         return _parse_sentences(text, at)
     words = tuple(Word(t.text, t.idx + at, t.head.i, t.dep_, t.pos_) for t in doc)
     sentences = list(doc.sents)
-    readings = [_restated(s, *_sentence_target(doc, s)) for s in sentences]
+    readings = [_restated(s, *_past_facing(s, *_sentence_target(doc, s))) for s in sentences]
     # target words that only point back ("take me to it", "the leather one"): about the one named before
     stand_ins = {t for _, t in readings if t is not None and doc[t].lower_ in STAND_INS and _antecedent(doc, t) == t}
     if any(target is not None and target not in stand_ins for _, target in readings):
@@ -306,6 +306,21 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
     found = next((k for k in (found, named, _object_of(doc, root)) if k is not None), None)
     scene = subject is not None and subject.dep_ == "expl"  # "There's a chest in the hall."
     return ("request" if question else "scene" if scene else "description"), found
+
+
+def _past_facing(sent, kind: str, found: int | None) -> tuple[str, int | None]:
+    """(kind, target) of a sentence whose target is only what the viewer faces, when a thing is named after it: the
+    attribute of a copula or the object of another verb ("turn and face the bin and it's the table on the left",
+    "facing the door you need to select the chair"): that thing is the target, the faced one the viewpoint."""
+    faced = None if found is None else sent.doc[found]
+    while faced is not None and faced.dep_ == "compound":  # ("the trash can", its last word tagged as a verb)
+        faced = faced.head
+    if faced is None or not (faced.head.lemma_ == "face" and faced.dep_ in ("dobj", "pobj")):
+        return kind, found
+    named = next((t.i for t in sent if t.i > found and t.pos_ in NOUNS and t.head.lemma_ != "face"
+                  and t.head.dep_ not in ("relcl", "acl") and not any(c.dep_ == "neg" for c in t.head.children)
+                  and (t.dep_ == "attr" and t.head.lemma_ == "be" or t.dep_ == "dobj" and t.head.pos_ == "VERB")), None)
+    return (kind, found) if named is None else ("request" if kind == "viewpoint" else kind, named)
 
 
 def _opening(sent):
