@@ -310,8 +310,8 @@ def _sentence_target(doc, sent) -> tuple[str, int | None]:
 
 def _past_facing(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     """(kind, target) of a sentence whose target is only what the viewer faces, when a thing is named after it: the
-    attribute of a copula or the object of another verb ("turn and face the bin and it's the table on the left",
-    "facing the door you need to select the chair"): that thing is the target, the faced one the viewpoint."""
+    attribute of a copula or the object of another verb ("turn and face the piano and it's the stool on the right",
+    "facing the sofa you need to pick the lamp"): that thing is the target, the faced one the viewpoint."""
     faced = None if found is None else sent.doc[found]
     while faced is not None and faced.dep_ == "compound":  # ("the trash can", its last word tagged as a verb)
         faced = faced.head
@@ -333,7 +333,7 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     ("the far end of the bench, that stool"), or after "so", a semicolon or a colon with no verb of its own (the
     reason before it: "I'd like to read, so any lamp in the den"): a phrase the parser hung on the clause before
     ("it's dark in here, so the tall lamp"), the subject of a predicate with no verb ("so the stool nearest the
-    door") or of a verb of sufficing ("so any lamp will do", "so any stool is fine"). A phrase after "so" asks
+    door") or of a verb of sufficing ("so any rug would do", "so any stool is fine"). A phrase after "so" asks
     even when the clause before it only went on about something ("it's late, so the lamp by the bed")."""
     if kind == "empty":
         return kind, found
@@ -354,7 +354,7 @@ def _restated(sent, kind: str, found: int | None) -> tuple[str, int | None]:
     return kind, found
 
 
-#: predicates that say any such thing will do ("any lamp will do", "any stool is fine")
+#: predicates that say any such thing will do ("any rug would do", "a stool is fine")
 _SUFFICING = frozenset({"do", "work", "suffice", "fine", "ok", "okay", "good", "great", "alright", "enough", "perfect"})
 
 
@@ -364,7 +364,7 @@ def _verbless(token, so: int) -> bool:
     place or comparison with no verb ("the chair nearest the sink") or of a predicate of sufficing."""
     head = token.head
     if head.i < so or token.dep_ in ("advcl", "npadvmod", "conj", "ccomp"):
-        return True  # (a noun heads no clause: "so any hall doorway" parsed as a clause of "hall")
+        return True  # (a noun heads no clause: a compound's first noun parsed as the subject of its last)
     if token.dep_ != "nsubj":
         return False
     placing = head.tag_ in ("JJR", "JJS", "RBR", "RBS") or head.pos_ == "ADP" or head.lower_ in NEARNESS
@@ -420,9 +420,9 @@ def _made(token) -> bool:
 def _noun_of(token) -> int | None:
     """The noun `token` stands for: itself when the tagger reads it as a noun; else, for a word
     the parse puts where a noun goes but tags otherwise ("the paint can is", "the kettle nearest to"),
-    or a word of nearness it tags as a noun ("the one nearer to the door"), the noun compounded with it
+    or a word of nearness it tags as a noun ("the one nearer to the piano"), the noun compounded with it
     or the stand-in before it; else None."""
-    if token.pos_ in NOUNS and token.lower_ in NEARNESS:  # "the one nearer to the door", tagged as a noun
+    if token.pos_ in NOUNS and token.lower_ in NEARNESS:  # "the one nearer to the piano", tagged as a noun
         return next((c.i for c in reversed(list(token.lefts)) if c.lower_ in ("one", "ones")
                      or c.dep_ == "compound" and c.pos_ in NOUNS), token.i)
     if token.pos_ in NOUNS:
@@ -450,8 +450,8 @@ def _command(doc, sent) -> tuple[object, int | None] | None:
 
 def _cut_off(subject, verb) -> bool:
     """True when ", so" stands between `subject` and `verb`: a reason of its own the parser folded into the
-    command ("dinner's ready, so take me to a seat": "dinner" is no subject of "take"; but "the lamp by the
-    door, go there": the lamp is where to go)."""
+    command ("the kettle's boiling, so take me to a mug": "boiling" is no subject of "take"; but "the vase by the
+    piano, go there": the vase is where to go)."""
     between = [t.lower_ for t in subject.doc[subject.right_edge.i + 1:verb.i]]
     return any(a == "," and b == "so" for a, b in zip(between, between[1:]))
 
@@ -481,7 +481,7 @@ def _object_of(doc, verb, clauses_only: bool = False) -> int | None:
             return seat  # ("I'd like to sit down in the den, in one of the armchairs")
     ruled_out = min((c.i for c in verb.children if c.dep_ == "neg" and c.i > verb.i), default=len(doc))
     kept = [c for c in verb.children if c.i < ruled_out]  # "lead me to the stool, not the cane one": not that one
-    if verb.lemma_ == "face":  # "facing the window, the lamp on the left": the parser's second object is the target
+    if verb.lemma_ == "face":  # "facing the fireplace, the stool on the right": the parser's second object is the target
         kept.sort(key=lambda c: not (c.dep_ == "dobj" and any(t.text == "," for t in verb.doc[verb.i:c.i])))
     for child in () if clauses_only else kept:
         way = child.lower_ == "way"  # "make your way to the ottoman": the way is how, the ottoman is where

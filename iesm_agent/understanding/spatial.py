@@ -57,7 +57,7 @@ _PEOPLE = _ANYONE | {"i", "you", "u", "ur", "we"}  # whoever may sit or look: an
 _WHEN = frozenset({"when", "while", "if", "as", "once", "whenever"})
 #: forms of "be" and of placing, after which a phrase of being alone says where the thing is ("it's on its own")
 _BEING = AUXILIARIES | {"s", "placed", "located"}
-#: the subjects of a relative clause that stand for the noun it hangs on ("the chair that is facing ...")
+#: the subjects of a relative clause that stand for the noun it hangs on ("the bench that is facing ...")
 _RELATIVE_PRONOUNS = frozenset({"that", "which", "who"})
 #: verbs whose side word says which way the target is turned, not where it is ("facing left")
 _TURNED = frozenset({"face", "faces", "facing", "faced", "turned", "turns", "pointing", "points", "pointed", "angled"})
@@ -588,7 +588,7 @@ class _Reader:
         first free category after that mark that no preposition or verb takes; with none ("facing the
         stools, the one on the left"), of the clause noun's kind."""
         at, st = self.target_at, self.structure
-        if self.turned_target():  # "it is facing the desk", "the chair that is facing the door": near what it faces
+        if self.turned_target():  # "it is facing the desk", "the bench that is facing the piano": near what it faces
             found = len(self.out.relations)
             i = self.landmark_relation(i, "near", self.toks[i] if i < len(self.toks) else "")
             if len(self.out.relations) > found and st.children(self.cue_word, "neg"):
@@ -611,7 +611,7 @@ class _Reader:
     def turned_target(self) -> bool:
         """True when the facing cue says which way the target is turned: its subject is the target or points
         back to it ("it is facing ..."), or it is a relative clause on the target with no subject of its own
-        but the relative pronoun ("the chair that is facing ...") or a participle on it in a request that says
+        but the relative pronoun ("the bench that is facing ...") or a participle on it in a request that says
         no side; not the viewer's ("when you face ...", "the left stool, facing the window": where one looks from)."""
         st = self.structure
         if self.cue_word is None or self.target_at is None:
